@@ -1,0 +1,151 @@
+#pragma once
+// The scene: plain data that fully describes a run. Parsing (TOML) produces it, the
+// cutting preset produces it, the solver consumes it. The solver never sees TOML.
+// All quantities SI unless the name says otherwise.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/tensor.hpp"
+
+namespace mpmcut {
+
+enum class ShapeFunctionKind { Linear, UGimp };
+enum class TimeScheme { USL, MUSL };
+enum class BoundaryKind { Free, Fixed, Roller };  // Roller = slip: normal velocity zero
+enum class MaterialModel { Elastic, JohnsonCook };
+enum class EquationOfState { Linear, MieGruneisen };
+enum class DamageEvolution { Linear, Exponential };
+
+struct MaterialParameters {
+  std::string name;                       // as referenced by bodies
+  std::string citation;                   // where the numbers come from
+  MaterialModel model = MaterialModel::Elastic;
+  // Elastic
+  double density = 0.0;        // kg/m^3
+  double youngs_modulus = 0.0; // Pa
+  double poisson_ratio = 0.0;  // -
+  // Thermal
+  double specific_heat = 0.0;         // J/(kg K)
+  double thermal_conductivity = 0.0;  // W/(m K)
+  double taylor_quinney = 0.9;        // fraction of plastic work turned into heat, -
+  double room_temperature = 298.0;    // T_r, K
+  double melting_temperature = 0.0;   // T_m, K
+  // Johnson-Cook flow stress: (A + B eps^n)(1 + C ln(epsdot/epsdot0))(1 - T*^m)
+  double jc_A = 0.0;  // Pa
+  double jc_B = 0.0;  // Pa
+  double jc_n = 1.0;  // -
+  double jc_C = 0.0;  // -
+  double jc_m = 1.0;  // -
+  double reference_strain_rate = 1.0;  // epsdot0, 1/s
+  // Time scale of the exponential moving average of the plastic strain rate, s (0: no smoothing)
+  double strain_rate_smoothing_time = 0.0;
+  // Pressure
+  EquationOfState eos = EquationOfState::Linear;
+  double mg_c0 = 0.0;     // Mie-Grueneisen bulk sound speed, m/s
+  double mg_s = 0.0;      // Hugoniot slope s, -
+  double mg_gamma0 = 0.0; // Grueneisen coefficient, -
+  double bulk_viscosity_linear = 0.0;     // b1, - (0 = off)
+  double bulk_viscosity_quadratic = 0.0;  // b2, -
+  // Johnson-Cook damage initiation: eps_f = (D1 + D2 exp(D3 eta))(1 + D4 ln epsdot*)(1 + D5 T*)
+  bool damage_enabled = false;
+  double jc_D1 = 0.0, jc_D2 = 0.0, jc_D3 = 0.0, jc_D4 = 0.0, jc_D5 = 0.0;
+  double min_failure_strain = 0.01;  // clamp for eps_f, -
+  // Hillerborg evolution after initiation
+  DamageEvolution damage_evolution = DamageEvolution::Linear;
+  double fracture_energy = 0.0;   // G_f, J/m^2 (or from K_IC)
+  double max_damage = 0.999;      // D at which a particle counts as fully failed, -
+
+  double bulk_modulus() const { return youngs_modulus / (3.0 * (1.0 - 2.0 * poisson_ratio)); }
+  double shear_modulus() const { return youngs_modulus / (2.0 * (1.0 + poisson_ratio)); }
+  // Elastic P-wave speed sqrt((K + 4G/3)/rho), m/s
+  double p_wave_speed() const;
+};
+
+struct Rectangle { Vec2 min, max; };
+struct Disk { Vec2 center; double radius = 0.0; };
+struct Polygon { std::vector<Vec2> vertices; };  // counter-clockwise or clockwise, simple
+
+enum class ShapeKind { Rectangle, Polygon, Disk };
+
+struct Shape {
+  ShapeKind kind = ShapeKind::Rectangle;
+  Rectangle rectangle;
+  Disk disk;
+  Polygon polygon;
+  bool contains(const Vec2& x) const;
+  // Axis-aligned bounding box.
+  void bounds(Vec2& lo, Vec2& hi) const;
+};
+
+// A deformable body filled with particles on a regular sub-grid of the background grid.
+struct BodySpec {
+  std::string name;
+  Shape shape;
+  std::string material;          // name of a MaterialParameters
+  int particles_per_cell = 2;    // per direction
+  Vec2 velocity = Vec2::Zero();  // initial, m/s
+  double temperature = 298.0;    // initial, K
+};
+
+// A rigid body: exact polygon geometry (signed distance and normal), prescribed velocity.
+struct RigidBodySpec {
+  std::string name;
+  Polygon polygon;               // the rigid body's outline at t = 0
+  Vec2 velocity = Vec2::Zero();  // prescribed, m/s
+  double friction = 0.0;         // Coulomb coefficient against deformable bodies, -
+};
+
+struct GridSpec {
+  double cell_size = 0.0;  // h, m
+  Vec2 min = Vec2::Zero(); // lower-left corner of the domain, m
+  Vec2 max = Vec2::Zero(); // upper-right corner, m
+};
+
+struct BoundarySpec {
+  BoundaryKind left = BoundaryKind::Free;
+  BoundaryKind right = BoundaryKind::Free;
+  BoundaryKind bottom = BoundaryKind::Free;
+  BoundaryKind top = BoundaryKind::Free;
+};
+
+struct ThermalSpec {
+  bool conduction = false;
+  // Fixed temperature per side, K; empty = insulated.
+  std::optional<double> left, right, bottom, top;
+};
+
+struct SolverSpec {
+  ShapeFunctionKind shape_function = ShapeFunctionKind::UGimp;
+  TimeScheme scheme = TimeScheme::MUSL;
+  double cfl = 0.4;             // -
+  double flip_fraction = 0.99;  // FLIP/PIC blend, 1 = pure FLIP
+  double end_time = 0.0;        // s
+  long max_steps = 0;           // 0 = unlimited
+  double fixed_time_step = 0.0; // s; 0 = adaptive from CFL
+};
+
+struct OutputSpec {
+  double snapshot_interval = 0.0;  // s between VTU snapshots; 0 = first and last only
+  double history_interval = 0.0;   // s between history rows; 0 = every step
+  bool vtu = true;
+};
+
+struct Scene {
+  std::string title;
+  std::string source_file;  // where it came from, for messages
+  GridSpec grid;
+  BoundarySpec boundaries;
+  ThermalSpec thermal;
+  SolverSpec solver;
+  OutputSpec output;
+  Vec2 body_force = Vec2::Zero();  // gravity-like acceleration, m/s^2
+  std::vector<MaterialParameters> materials;
+  std::vector<BodySpec> bodies;
+  std::vector<RigidBodySpec> rigid_bodies;
+
+  // Index of the material called `name`, or -1.
+  int material_index(const std::string& name) const;
+};
+
+}  // namespace mpmcut

@@ -1,0 +1,97 @@
+#pragma once
+// The simulation state and the explicit step. Built from a Scene; observers (outputs,
+// progress, checkpoints) read it between steps and never change it.
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/grid.hpp"
+#include "core/particles.hpp"
+#include "core/scene.hpp"
+#include "core/shape_functions.hpp"
+#include "physics/material.hpp"
+
+namespace mpmcut {
+
+// Thrown by the guards (NaN, particle leaving the grid, penetration): carries the where.
+class SimulationError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// A rigid body's motion and the force the deformable bodies exert on it through contact.
+struct RigidBodyState {
+  std::string name;
+  Vec2 velocity = Vec2::Zero();      // m/s (prescribed)
+  Vec2 displacement = Vec2::Zero();  // m since t = 0
+  Vec2 force = Vec2::Zero();         // N per m of thickness, on the rigid body, last step
+  Vec2 impulse = Vec2::Zero();       // N s per m, accumulated
+  double work = 0.0;                 // J per m: work done BY the rigid body on the material
+};
+
+// Global energies, J per m of thickness. Dissipated terms accumulate from t = 0.
+struct EnergyTotals {
+  double kinetic = 0.0;
+  double elastic = 0.0;
+  double plastic_work = 0.0;
+  double heat = 0.0;               // plastic heating + frictional heating
+  double damage_dissipation = 0.0;
+  double friction = 0.0;           // frictional work at rigid contacts
+  double external_work = 0.0;      // work by rigid bodies + body force
+};
+
+class Simulation {
+ public:
+  explicit Simulation(const Scene& scene);
+
+  void step();  // one explicit time step; throws SimulationError from the guards
+
+  const Scene& scene() const { return scene_; }
+  const Particles& particles() const { return particles_; }
+  Particles& particles() { return particles_; }  // for set-up, tests and restarts only
+  const Grid& grid() const { return grid_; }
+  const std::vector<std::unique_ptr<Material>>& materials() const { return materials_; }
+  const std::vector<RigidBodyState>& rigid_bodies() const { return rigid_; }
+  std::vector<RigidBodyState>& rigid_bodies() { return rigid_; }  // restarts only
+  const EnergyTotals& energy() const { return energy_; }
+  EnergyTotals& energy() { return energy_; }  // restarts only
+
+  double time() const { return time_; }
+  long step_count() const { return step_; }
+  double last_dt() const { return dt_; }
+  void set_clock(double time, long step) { time_ = time; step_ = step; }  // restarts only
+
+  // Time step the next step() will take: CFL limit, capped so the run ends at end_time.
+  double stable_time_step() const;
+  Vec2 total_momentum() const;  // kg m/s per m
+  double max_temperature() const;
+  // Recomputes kinetic and elastic energy from the particles (dissipation terms are kept).
+  void refresh_energy();
+
+ private:
+  void build_particles();
+  void particles_to_grid();
+  void apply_grid_boundary_conditions(bool momentum_only);
+  void update_grid_momentum(double dt);
+  void apply_rigid_contact(double dt, bool accumulate_force);
+  void grid_to_particles(double dt);
+  void remap_momentum_musl();
+  void update_particle_stress(double dt);
+  void conduct_heat(double dt);
+  void check_guards() const;
+  void sort_particles_by_cell();
+
+  Scene scene_;
+  Grid grid_;
+  ShapeFunction shape_;
+  Particles particles_;
+  std::vector<std::unique_ptr<Material>> materials_;
+  std::vector<RigidBodyState> rigid_;
+  EnergyTotals energy_;
+  double time_ = 0.0;
+  double dt_ = 0.0;
+  long step_ = 0;
+};
+
+}  // namespace mpmcut
