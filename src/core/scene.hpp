@@ -60,11 +60,23 @@ struct MaterialParameters {
   double shear_modulus() const { return youngs_modulus / (2.0 * (1.0 + poisson_ratio)); }
   // Elastic P-wave speed sqrt((K + 4G/3)/rho), m/s
   double p_wave_speed() const;
+
+  bool operator==(const MaterialParameters&) const = default;  // field-wise, for round-trip tests
 };
 
-struct Rectangle { Vec2 min, max; };
-struct Disk { Vec2 center; double radius = 0.0; };
-struct Polygon { std::vector<Vec2> vertices; };  // counter-clockwise or clockwise, simple
+struct Rectangle {
+  Vec2 min, max;
+  bool operator==(const Rectangle&) const = default;
+};
+struct Disk {
+  Vec2 center;
+  double radius = 0.0;
+  bool operator==(const Disk&) const = default;
+};
+struct Polygon {
+  std::vector<Vec2> vertices;  // counter-clockwise or clockwise, simple
+  bool operator==(const Polygon&) const = default;
+};
 
 enum class ShapeKind { Rectangle, Polygon, Disk };
 
@@ -76,6 +88,8 @@ struct Shape {
   bool contains(const Vec2& x) const;
   // Axis-aligned bounding box.
   void bounds(Vec2& lo, Vec2& hi) const;
+
+  bool operator==(const Shape&) const = default;  // field-wise, for round-trip tests
 };
 
 // A deformable body filled with particles on a regular sub-grid of the background grid.
@@ -86,6 +100,8 @@ struct BodySpec {
   int particles_per_cell = 2;    // per direction
   Vec2 velocity = Vec2::Zero();  // initial, m/s
   double temperature = 298.0;    // initial, K
+
+  bool operator==(const BodySpec&) const = default;  // field-wise, for round-trip tests
 };
 
 // A rigid body: exact polygon geometry (signed distance and normal), prescribed velocity.
@@ -94,12 +110,16 @@ struct RigidBodySpec {
   Polygon polygon;               // the rigid body's outline at t = 0
   Vec2 velocity = Vec2::Zero();  // prescribed, m/s
   double friction = 0.0;         // Coulomb coefficient against deformable bodies, -
+
+  bool operator==(const RigidBodySpec&) const = default;  // field-wise, for round-trip tests
 };
 
 struct GridSpec {
   double cell_size = 0.0;  // h, m
   Vec2 min = Vec2::Zero(); // lower-left corner of the domain, m
   Vec2 max = Vec2::Zero(); // upper-right corner, m
+
+  bool operator==(const GridSpec&) const = default;  // field-wise, for round-trip tests
 };
 
 struct BoundarySpec {
@@ -107,12 +127,16 @@ struct BoundarySpec {
   BoundaryKind right = BoundaryKind::Free;
   BoundaryKind bottom = BoundaryKind::Free;
   BoundaryKind top = BoundaryKind::Free;
+
+  bool operator==(const BoundarySpec&) const = default;  // field-wise, for round-trip tests
 };
 
 struct ThermalSpec {
   bool conduction = false;
   // Fixed temperature per side, K; empty = insulated.
   std::optional<double> left, right, bottom, top;
+
+  bool operator==(const ThermalSpec&) const = default;  // field-wise, for round-trip tests
 };
 
 struct SolverSpec {
@@ -123,12 +147,19 @@ struct SolverSpec {
   double end_time = 0.0;        // s
   long max_steps = 0;           // 0 = unlimited
   double fixed_time_step = 0.0; // s; 0 = adaptive from CFL
+  // Rigid contact acts at a node when the material's mass-weighted mean position there lies
+  // closer to the rigid surface than this many cells (position check, no one-cell gap).
+  double contact_distance_cells = 0.5;  // -
+
+  bool operator==(const SolverSpec&) const = default;  // field-wise, for round-trip tests
 };
 
 struct OutputSpec {
   double snapshot_interval = 0.0;  // s between VTU snapshots; 0 = first and last only
   double history_interval = 0.0;   // s between history rows; 0 = every step
   bool vtu = true;
+
+  bool operator==(const OutputSpec&) const = default;  // field-wise, for round-trip tests
 };
 
 struct Scene {
@@ -146,6 +177,8 @@ struct Scene {
 
   // Index of the material called `name`, or -1.
   int material_index(const std::string& name) const;
+
+  bool operator==(const Scene&) const = default;  // field-wise, for round-trip tests
 };
 
 }  // namespace mpmcut

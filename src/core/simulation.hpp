@@ -9,6 +9,7 @@
 #include "core/grid.hpp"
 #include "core/particles.hpp"
 #include "core/scene.hpp"
+#include "contact/rigid_polygon.hpp"
 #include "core/shape_functions.hpp"
 #include "physics/material.hpp"
 
@@ -74,7 +75,7 @@ class Simulation {
   void particles_to_grid();
   void apply_grid_boundary_conditions(bool momentum_only);
   void update_grid_momentum(double dt);
-  void apply_rigid_contact(double dt, bool accumulate_force);
+  void apply_rigid_contact(std::vector<Vec2>& velocity, double dt, bool accumulate_force);
   void grid_to_particles(double dt);
   void remap_momentum_musl();
   void update_particle_stress(double dt);
@@ -82,9 +83,25 @@ class Simulation {
   void check_guards() const;
   void sort_particles_by_cell();
 
+  // Sum over particles of f(i), in fixed-size chunks so the result does not depend on the thread count.
+  template <class F>
+  double deterministic_sum(std::size_t n, F&& f) const;
+  const ShapeFunction& shape_of(std::size_t particle) const { return shapes_[particles_.body[particle]]; }
+  Vec2 cell_units(const Vec2& x) const { return (x - grid_.origin) / grid_.h; }
+  void bucket_particles_by_strip();
+  template <class F>
+  void for_each_particle_coloured(F&& scatter);
+
   Scene scene_;
   Grid grid_;
-  ShapeFunction shape_;
+  std::vector<ShapeFunction> shapes_;  // one per body (uGIMP lp depends on its particles per cell)
+  std::vector<RigidPolygon> rigid_geometry_;  // outlines at t = 0; current = outline + displacement
+  double node_mass_cutoff_ = 0.0;             // nodes lighter than this count as empty, kg/m
+  // Scratch, reused every step
+  std::vector<Vec2> position_new_;
+  std::vector<std::size_t> strip_order_;  // particle indices grouped by strip of grid rows
+  std::vector<std::size_t> strip_begin_;  // strip s holds strip_order_[strip_begin_[s] .. strip_begin_[s+1])
+  std::vector<ConstitutiveIncrement> increments_;
   Particles particles_;
   std::vector<std::unique_ptr<Material>> materials_;
   std::vector<RigidBodyState> rigid_;

@@ -1,7 +1,7 @@
 #pragma once
 // Small fixed-size algebra used everywhere: 2D vectors and matrices (Eigen), and the
 // plane-strain stress/strain tensor that keeps the out-of-plane zz component.
-#include <Eigen/Core>
+#include <Eigen/Dense>
 #include <cmath>
 
 namespace mpmcut {
