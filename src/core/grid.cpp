@@ -26,6 +26,7 @@ void Grid::build(const GridSpec& spec) {
   heat_capacity.assign(n, 0.0);
   temperature.assign(n, 0.0);
   heat_rate.assign(n, 0.0);
+  in_contact.assign(n, 0);
   fixed.assign(n, 0);
   fixed_temperature.assign(n, 0.0);
 }

@@ -31,6 +31,7 @@ struct Grid {
   std::vector<double> temperature;     // K
   std::vector<double> heat_rate;       // W/m
   // Boundary flags: bit 0 = x velocity fixed, bit 1 = y velocity fixed; bits 2.. = fixed temperature
+  std::vector<std::uint8_t> in_contact;  // 1 where rigid contact acted after the momentum update
   std::vector<std::uint8_t> fixed;
   std::vector<double> fixed_temperature;  // K, where bit 2 is set
 

@@ -65,11 +65,11 @@ struct MaterialParameters {
 };
 
 struct Rectangle {
-  Vec2 min, max;
+  Vec2 min = Vec2::Zero(), max = Vec2::Zero();
   bool operator==(const Rectangle&) const = default;
 };
 struct Disk {
-  Vec2 center;
+  Vec2 center = Vec2::Zero();
   double radius = 0.0;
   bool operator==(const Disk&) const = default;
 };

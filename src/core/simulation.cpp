@@ -110,14 +110,15 @@ void Simulation::sort_particles_by_cell() {
 // ---------------------------------------------------------------------------------------------
 // The step
 
-void Simulation::step() {
-  const double dt = stable_time_step();
+void Simulation::step(double max_dt) {
+  const double dt = std::min(stable_time_step(), max_dt);
   if (step_ % 20 == 0) sort_particles_by_cell();
   particles_to_grid();
   apply_grid_boundary_conditions(true);
-  apply_rigid_contact(grid_.velocity, dt, false);
+  for (auto& r : rigid_) r.step_impulse = Vec2::Zero();
+  apply_rigid_contact(grid_.velocity, dt, ContactPass::AfterP2G);
   update_grid_momentum(dt);
-  apply_rigid_contact(grid_.velocity_new, dt, true);
+  apply_rigid_contact(grid_.velocity_new, dt, ContactPass::AfterUpdate);
   grid_to_particles(dt);
   if (scene_.solver.scheme == TimeScheme::MUSL) remap_momentum_musl();
   update_particle_stress(dt);
@@ -235,14 +236,13 @@ void Simulation::particles_to_grid() {
   const std::size_t nn = G.node_count();
 #pragma omp parallel for schedule(static)
   for (std::size_t n = 0; n < nn; ++n) {
-    const bool has_mass = G.mass[n] > node_mass_cutoff_;
-    G.velocity[n] = has_mass ? Vec2(G.momentum[n] / G.mass[n]) : Vec2::Zero();
+    G.velocity[n] = G.mass[n] > 0.0 ? Vec2(G.momentum[n] / G.mass[n]) : Vec2::Zero();
     if (thermal) G.temperature[n] = G.heat_capacity[n] > 0.0 ? G.temperature[n] / G.heat_capacity[n] : 0.0;
   }
 }
 
 // Zero the constrained velocity components at fixed and roller nodes. With momentum_only the
-// P2G momenta and velocities are constrained; otherwise the updated ones and the forces.
+// P2G velocities are constrained; otherwise the updated velocities and the forces.
 void Simulation::apply_grid_boundary_conditions(bool momentum_only) {
   Grid& G = grid_;
   const std::size_t nn = G.node_count();
@@ -253,8 +253,7 @@ void Simulation::apply_grid_boundary_conditions(bool momentum_only) {
     for (int d = 0; d < 2; ++d) {
       if (!(f & (1 << d))) continue;
       if (momentum_only) {
-        G.momentum[n][d] = 0.0;
-        G.velocity[n][d] = 0.0;
+        G.velocity[n][d] = 0.0;  // the raw P2G momentum stays: FLIP sees the constraint as a change
       } else {
         G.force[n][d] = 0.0;
         G.velocity_new[n][d] = 0.0;
@@ -268,9 +267,10 @@ void Simulation::update_grid_momentum(double dt) {
   const std::size_t nn = G.node_count();
 #pragma omp parallel for schedule(static)
   for (std::size_t n = 0; n < nn; ++n) {
-    const bool has_mass = G.mass[n] > node_mass_cutoff_;
     // From the velocity (which carries the first contact pass), not the raw P2G momentum.
-    G.velocity_new[n] = has_mass ? Vec2(G.velocity[n] + dt * G.force[n] / G.mass[n]) : Vec2::Zero();
+    // Nodes lighter than the cut-off keep their velocity: a / m there would be noise.
+    const bool has_mass = G.mass[n] > node_mass_cutoff_;
+    G.velocity_new[n] = has_mass ? Vec2(G.velocity[n] + dt * G.force[n] / G.mass[n]) : G.velocity[n];
   }
   apply_grid_boundary_conditions(false);
 }
@@ -281,11 +281,14 @@ void Simulation::update_grid_momentum(double dt) {
 // position at the node lies within contact_distance_cells of it (no one-cell gap). The normal
 // is the exact outward normal of the rigid outline. Normal approach is removed; the
 // tangential slip is reduced by at most mu times the normal change (Coulomb stick/slip).
-// With accumulate_force (the call after the momentum update) the reaction on each rigid body,
-// its work and the frictional work are recorded.
-void Simulation::apply_rigid_contact(std::vector<Vec2>& v, double dt, bool accumulate_force) {
+// With accumulate_force (the passes after P2G and after the momentum update, whose corrections
+// reach the particles) the impulse on each rigid body, its work and the frictional work are
+// recorded; the force of a step is the sum of both passes' impulses over dt.
+void Simulation::apply_rigid_contact(std::vector<Vec2>& v, double dt, ContactPass pass) {
   if (rigid_.empty()) return;
   Grid& G = grid_;
+  const bool accumulate_force = pass != ContactPass::MuslRemap;
+  if (pass == ContactPass::AfterUpdate) std::fill(G.in_contact.begin(), G.in_contact.end(), 0);
   const double cutoff = scene_.solver.contact_distance_cells * G.h;
   for (std::size_t r = 0; r < rigid_.size(); ++r) {
     const RigidPolygon& geom = rigid_geometry_[r];
@@ -313,12 +316,20 @@ void Simulation::apply_rigid_contact(std::vector<Vec2>& v, double dt, bool accum
         if (dist > cutoff) continue;
         const Vec2 rel = v[n] - vr;
         const double vn = rel.dot(normal);
-        if (vn >= 0.0) continue;  // separating
+        if (pass == ContactPass::MuslRemap) {
+          // Only where the momentum update found contact, and there whatever the sign: the
+          // strain update must see the same constraint that moved the particles (an approach
+          // test here lets the strain velocity disagree with the motion and creates energy).
+          if (!G.in_contact[n]) continue;
+        } else if (vn >= 0.0) {
+          continue;  // separating
+        }
+        if (pass == ContactPass::AfterUpdate) G.in_contact[n] = 1;
         Vec2 vt = rel - vn * normal;
         const double vt_norm = vt.norm();
         Vec2 new_rel = vt;  // normal approach removed
         if (vt_norm > 0.0) {
-          const double reduction = std::min(vt_norm, mu * (-vn));  // Coulomb: |dv_t| <= mu |dv_n|
+          const double reduction = std::min(vt_norm, mu * std::abs(vn));  // Coulomb: |dv_t| <= mu |dv_n|
           new_rel = vt * (1.0 - reduction / vt_norm);
         }
         const Vec2 dv = new_rel - rel;
@@ -333,7 +344,8 @@ void Simulation::apply_rigid_contact(std::vector<Vec2>& v, double dt, bool accum
       }
     }
     if (accumulate_force) {
-      rigid_[r].force = -impulse / dt;
+      rigid_[r].step_impulse -= impulse;
+      rigid_[r].force = rigid_[r].step_impulse / dt;
       rigid_[r].impulse -= impulse;
       rigid_[r].work += work;
       energy_.external_work += work;
@@ -362,7 +374,10 @@ void Simulation::grid_to_particles(double dt) {
         if (w == 0.0) continue;
         const int node = G.index(st.i0 + a, st.j0 + c);
         v_pic += w * G.velocity_new[node];
-        dv += w * (G.velocity_new[node] - G.velocity[node]);
+        // FLIP increment from the raw P2G velocity, so the particles receive the contact and
+        // boundary corrections of both passes: momentum given = contact impulse + f dt.
+        const Vec2 v_p2g = G.momentum[node] / G.mass[node];  // w > 0, so the node has mass
+        dv += w * (G.velocity_new[node] - v_p2g);
       }
     const Vec2 v_old = P.velocity[p];
     P.velocity[p] = flip * (v_old + dv) + (1.0 - flip) * v_pic;
@@ -390,9 +405,9 @@ void Simulation::remap_momentum_musl() {
   const std::size_t nn = G.node_count();
 #pragma omp parallel for schedule(static)
   for (std::size_t n = 0; n < nn; ++n)
-    G.velocity_new[n] = G.mass[n] > node_mass_cutoff_ ? Vec2(G.momentum[n] / G.mass[n]) : Vec2::Zero();
+    G.velocity_new[n] = G.mass[n] > 0.0 ? Vec2(G.momentum[n] / G.mass[n]) : Vec2::Zero();
   apply_grid_boundary_conditions(false);
-  apply_rigid_contact(G.velocity_new, 0.0, false);
+  apply_rigid_contact(G.velocity_new, 0.0, ContactPass::MuslRemap);
 }
 
 void Simulation::update_particle_stress(double dt) {

@@ -1,6 +1,7 @@
 #pragma once
 // The simulation state and the explicit step. Built from a Scene; observers (outputs,
 // progress, checkpoints) read it between steps and never change it.
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -28,6 +29,7 @@ struct RigidBodyState {
   Vec2 displacement = Vec2::Zero();  // m since t = 0
   Vec2 force = Vec2::Zero();         // N per m of thickness, on the rigid body, last step
   Vec2 impulse = Vec2::Zero();       // N s per m, accumulated
+  Vec2 step_impulse = Vec2::Zero();  // N s per m, this step (both contact passes)
   double work = 0.0;                 // J per m: work done BY the rigid body on the material
 };
 
@@ -46,7 +48,9 @@ class Simulation {
  public:
   explicit Simulation(const Scene& scene);
 
-  void step();  // one explicit time step; throws SimulationError from the guards
+  // One explicit time step of at most max_dt (to land on output times); throws SimulationError
+  // from the guards.
+  void step(double max_dt = std::numeric_limits<double>::infinity());
 
   const Scene& scene() const { return scene_; }
   const Particles& particles() const { return particles_; }
@@ -75,7 +79,8 @@ class Simulation {
   void particles_to_grid();
   void apply_grid_boundary_conditions(bool momentum_only);
   void update_grid_momentum(double dt);
-  void apply_rigid_contact(std::vector<Vec2>& velocity, double dt, bool accumulate_force);
+  enum class ContactPass { AfterP2G, AfterUpdate, MuslRemap };
+  void apply_rigid_contact(std::vector<Vec2>& velocity, double dt, ContactPass pass);
   void grid_to_particles(double dt);
   void remap_momentum_musl();
   void update_particle_stress(double dt);
