@@ -18,6 +18,8 @@
 #include "io/progress.hpp"
 #include "io/pvd_writer.hpp"
 #include "io/result_directory.hpp"
+#include "io/run_observer.hpp"
+#include "io/scene_observers.hpp"
 #include "io/scene_writer.hpp"
 #include "io/vtu_writer.hpp"
 
@@ -80,11 +82,17 @@ class RunOutputs {
  public:
   RunOutputs(const ResultDirectory& dir, Simulation& sim)
       : dir_(dir), sim_(sim), history_(dir.path("history.csv"), history_columns()) {
+    observers_ = make_scene_observers(sim.scene(), dir.root());
     if (!sim.rigid_bodies().empty()) rigid_.emplace(dir.path("rigid_forces.csv"), rigid_force_columns(sim));
     std::filesystem::create_directories(dir.path("snapshots"));
   }
 
+  void after_step() {
+    for (auto& o : observers_) o->after_step(sim_);
+  }
+
   void history_row() {
+    for (auto& o : observers_) o->at_history(sim_);
     sim_.refresh_energy();
     const EnergyTotals& e = sim_.energy();
     const Vec2 m = sim_.total_momentum();
@@ -116,6 +124,11 @@ class RunOutputs {
   void flush() {
     history_.flush();
     if (rigid_) rigid_->flush();
+    for (auto& o : observers_) o->flush();
+  }
+
+  void finish(nlohmann::json& summary) {
+    for (auto& o : observers_) o->at_finish(sim_, summary);
   }
 
  private:
@@ -124,6 +137,7 @@ class RunOutputs {
   CsvWriter history_;
   std::optional<CsvWriter> rigid_;
   PvdSeries pvd_;
+  std::vector<std::unique_ptr<RunObserver>> observers_;
   int snapshots_ = 0;
   double last_snapshot_time_ = -1.0;
 };
@@ -191,8 +205,9 @@ int run_case(const Scene& scene, const RunOptions& options) {
   const char* status = run_status::complete;
   std::string message;
   int exit_code = kExitComplete;
+  std::optional<RunOutputs> outputs;
   try {
-    RunOutputs out(*dir, sim);
+    RunOutputs& out = outputs.emplace(*dir, sim);
     out.history_row();
     out.rigid_row();
     out.snapshot();
@@ -208,6 +223,7 @@ int run_case(const Scene& scene, const RunOptions& options) {
         double target = std::min(next_snapshot, end);
         if (hist_dt > 0) target = std::min(target, next_history);
         sim.step(target - sim.time());
+        out.after_step();
         if (hist_dt <= 0 || sim.time() >= next_history - eps) {
           out.history_row();
           out.rigid_row();
@@ -245,7 +261,9 @@ int run_case(const Scene& scene, const RunOptions& options) {
   if (options.progress) progress.finish(status);
   const double wall_s = wall();
   try {
-    write_json_atomically(dir->path("summary.json"), summary_json(sim, status, wall_s, message, threads));
+    nlohmann::json summary = summary_json(sim, status, wall_s, message, threads);
+    if (outputs) outputs->finish(summary);
+    write_json_atomically(dir->path("summary.json"), summary);
   } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << "\n";
     return kExitOutputError;

@@ -1,0 +1,15 @@
+#pragma once
+// The observers a scene asks for beyond the generic outputs (e.g. the cutting forces).
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+#include "core/scene.hpp"
+#include "io/run_observer.hpp"
+
+namespace mpmcut {
+
+std::vector<std::unique_ptr<RunObserver>> make_scene_observers(const Scene& scene,
+                                                               const std::filesystem::path& result_dir);
+
+}  // namespace mpmcut
