@@ -6,16 +6,27 @@
 
 namespace mpmcut {
 
-RigidPolygon::RigidPolygon(const Polygon& outline) : v_(outline.vertices) {
+RigidPolygon::RigidPolygon(const Polygon& outline, double rounding_radius)
+    : v_(outline.vertices), radius_(rounding_radius) {
   if (v_.empty()) return;
   lo_ = hi_ = v_.front();
   for (const auto& p : v_) {
     lo_ = lo_.cwiseMin(p);
     hi_ = hi_.cwiseMax(p);
   }
+  lo_ -= Vec2::Constant(radius_);
+  hi_ += Vec2::Constant(radius_);
 }
 
 bool RigidPolygon::inside(const Vec2& x) const {
+  if (radius_ > 0.0) {
+    Vec2 n;
+    return signed_distance(x, n) < 0.0;
+  }
+  return inside_core(x);
+}
+
+bool RigidPolygon::inside_core(const Vec2& x) const {
   bool in = false;
   for (std::size_t i = 0, j = v_.size() - 1; i < v_.size(); j = i++) {
     if ((v_[i].y() > x.y()) != (v_[j].y() > x.y())) {
@@ -27,6 +38,10 @@ bool RigidPolygon::inside(const Vec2& x) const {
 }
 
 double RigidPolygon::signed_distance(const Vec2& x, Vec2& normal) const {
+  return polygon_distance(x, normal) - radius_;
+}
+
+double RigidPolygon::polygon_distance(const Vec2& x, Vec2& normal) const {
   double best = std::numeric_limits<double>::max();
   Vec2 closest = x;
   for (std::size_t i = 0, j = v_.size() - 1; i < v_.size(); j = i++) {
@@ -41,7 +56,7 @@ double RigidPolygon::signed_distance(const Vec2& x, Vec2& normal) const {
     }
   }
   const double d = std::sqrt(best);
-  const bool in = inside(x);
+  const bool in = inside_core(x);
   Vec2 dir = x - closest;
   if (d > 1e-14 * (hi_ - lo_).norm()) {
     normal = (in ? -dir : dir) / d;

@@ -22,7 +22,7 @@ void Grid::build(const GridSpec& spec) {
   velocity.assign(n, Vec2::Zero());
   velocity_new.assign(n, Vec2::Zero());
   mass_position.assign(n, Vec2::Zero());
-  mass_gradient.assign(n, Vec2::Zero());
+  friction_heat.assign(n, 0.0);
   heat_capacity.assign(n, 0.0);
   temperature.assign(n, 0.0);
   heat_rate.assign(n, 0.0);
@@ -36,7 +36,7 @@ void Grid::reset() {
   std::fill(momentum.begin(), momentum.end(), Vec2::Zero());
   std::fill(force.begin(), force.end(), Vec2::Zero());
   std::fill(mass_position.begin(), mass_position.end(), Vec2::Zero());
-  std::fill(mass_gradient.begin(), mass_gradient.end(), Vec2::Zero());
+  std::fill(friction_heat.begin(), friction_heat.end(), 0.0);
   std::fill(heat_capacity.begin(), heat_capacity.end(), 0.0);
   std::fill(temperature.begin(), temperature.end(), 0.0);
   std::fill(heat_rate.begin(), heat_rate.end(), 0.0);

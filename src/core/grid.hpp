@@ -25,11 +25,11 @@ struct Grid {
   std::vector<Vec2> velocity;          // m/s, before the momentum update
   std::vector<Vec2> velocity_new;      // m/s, after the momentum update (and contact)
   std::vector<Vec2> mass_position;     // sum S m x, for the contact position check, kg m/m
-  std::vector<Vec2> mass_gradient;     // sum m grad S, points out of the material, kg/m^2
   // Thermal fields
   std::vector<double> heat_capacity;   // sum S m c, J/(K m)
   std::vector<double> temperature;     // K
   std::vector<double> heat_rate;       // W/m
+  std::vector<double> friction_heat;   // J/m, frictional work at rigid contacts this step
   // Boundary flags: bit 0 = x velocity fixed, bit 1 = y velocity fixed; bits 2.. = fixed temperature
   std::vector<std::uint8_t> in_contact;  // 1 where rigid contact acted after the momentum update
   std::vector<std::uint8_t> fixed;

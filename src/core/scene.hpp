@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/tensor.hpp"
+#include "cutting/cutting_parameters.hpp"
 
 namespace mpmcut {
 
@@ -104,10 +105,13 @@ struct BodySpec {
   bool operator==(const BodySpec&) const = default;  // field-wise, for round-trip tests
 };
 
-// A rigid body: exact polygon geometry (signed distance and normal), prescribed velocity.
+// A rigid body: exact geometry (signed distance and normal), prescribed velocity. Its shape is
+// the polygon grown by rounding_radius (every corner becomes an arc of that radius, e.g. a
+// cutting edge radius); with rounding_radius = 0 it is the polygon itself.
 struct RigidBodySpec {
   std::string name;
-  Polygon polygon;               // the rigid body's outline at t = 0
+  Polygon polygon;               // the rigid body's outline at t = 0 (its core when rounded)
+  double rounding_radius = 0.0;  // m
   Vec2 velocity = Vec2::Zero();  // prescribed, m/s
   double friction = 0.0;         // Coulomb coefficient against deformable bodies, -
 
@@ -147,6 +151,9 @@ struct SolverSpec {
   double end_time = 0.0;        // s
   long max_steps = 0;           // 0 = unlimited
   double fixed_time_step = 0.0; // s; 0 = adaptive from CFL
+  // Particles that leave the grid domain are removed (with a count in the summary) instead of
+  // stopping the run: for chips that break off and fly away.
+  bool remove_escaping_particles = false;
   // Rigid contact acts at a node when the material's mass-weighted mean position there lies
   // closer to the rigid surface than this many cells (position check, no one-cell gap).
   double contact_distance_cells = 0.5;  // -
@@ -174,6 +181,9 @@ struct Scene {
   std::vector<MaterialParameters> materials;
   std::vector<BodySpec> bodies;
   std::vector<RigidBodySpec> rigid_bodies;
+  // Set when the scene was built by the cutting preset: the process it stands for (the solver
+  // ignores it; the cutting outputs read it). The tool is rigid_bodies[0].
+  std::optional<CuttingParameters> cutting;
 
   // Index of the material called `name`, or -1.
   int material_index(const std::string& name) const;

@@ -38,26 +38,4 @@ double ShapeFunction::gradient_1d(double xi) const {
   return 0.0;
 }
 
-void ShapeFunction::evaluate_1d(double u, int& first, double w[3], double dw[3]) const {
-  // Nodes with non-zero weight satisfy |u - i| < 1 + l; the first is floor(u - l) (floor(u) for linear).
-  first = static_cast<int>(std::floor(u - l_));
-  for (int a = 0; a < 3; ++a) {
-    const double xi = (u - (first + a)) * h_;
-    w[a] = weight_1d(xi);
-    dw[a] = gradient_1d(xi);
-  }
-}
-
-void ShapeFunction::evaluate(double ux, double uy, Stencil& st) const {
-  double wx[3], wy[3], dx[3], dy[3];
-  evaluate_1d(ux, st.i0, wx, dx);
-  evaluate_1d(uy, st.j0, wy, dy);
-  for (int a = 0; a < 3; ++a)
-    for (int b = 0; b < 3; ++b) {
-      st.w[a][b] = wx[a] * wy[b];
-      st.dwdx[a][b] = dx[a] * wy[b];
-      st.dwdy[a][b] = wx[a] * dy[b];
-    }
-}
-
 }  // namespace mpmcut

@@ -25,12 +25,13 @@ Simulation::Simulation(const Scene& scene) : scene_(scene) {
   for (const auto& b : scene_.bodies)
     shapes_.emplace_back(scene_.solver.shape_function, grid_.h, b.particles_per_cell);
   for (const auto& r : scene_.rigid_bodies) {
-    rigid_geometry_.emplace_back(r.polygon);
+    rigid_geometry_.emplace_back(r.polygon, r.rounding_radius);
     RigidBodyState st;
     st.name = r.name;
     st.velocity = r.velocity;
     rigid_.push_back(st);
   }
+  for (const auto& r : scene_.rigid_bodies) has_friction_ = has_friction_ || r.friction > 0.0;
   double max_density = 0.0;
   for (const auto& m : scene_.materials) max_density = std::max(max_density, m.density);
   // MPM3D's cut-off (1e-5 rho h^3 in 3D), per unit thickness here.
@@ -122,13 +123,55 @@ void Simulation::step(double max_dt) {
   grid_to_particles(dt);
   if (scene_.solver.scheme == TimeScheme::MUSL) remap_momentum_musl();
   update_particle_stress(dt);
+  if (has_friction_) deposit_frictional_heat();
   if (scene_.thermal.conduction) conduct_heat(dt);
   std::swap(particles_.position, position_new_);
   for (std::size_t r = 0; r < rigid_.size(); ++r) rigid_[r].displacement += dt * rigid_[r].velocity;
   dt_ = dt;
   time_ += dt;
   ++step_;
+  if (scene_.solver.remove_escaping_particles) remove_escaped_particles();
   check_guards();
+}
+
+// Frictional work found at contact nodes heats the particles there: node i's heat q_i goes to
+// particle p in proportion to S_ip m_p c_p, so that sum_p m_p c_p dT_p = sum_i q_i exactly.
+void Simulation::deposit_frictional_heat() {
+  Particles& P = particles_;
+  const Grid& G = grid_;
+  const std::size_t n = P.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t p = 0; p < n; ++p) {
+    Stencil st;
+    const Vec2 u = cell_units(P.position[p]);
+    shape_of(p).evaluate(u.x(), u.y(), st);
+    double dT = 0.0;
+    for (int a = 0; a < 3; ++a)
+      for (int c = 0; c < 3; ++c) {
+        const int node = G.index(st.i0 + a, st.j0 + c);
+        if (st.w[a][c] != 0.0 && G.friction_heat[node] > 0.0) dT += st.w[a][c] * G.friction_heat[node] / G.heat_capacity[node];
+      }
+    P.temperature[p] += dT;
+  }
+}
+
+// Chips that break off and fly out of the domain are removed rather than stopping the run.
+void Simulation::remove_escaped_particles() {
+  const Particles& P = particles_;
+  const Vec2 lo = grid_.domain_min, hi = grid_.domain_max;
+  std::vector<std::size_t> keep;
+  keep.reserve(P.size());
+  for (std::size_t p = 0; p < P.size(); ++p) {
+    const Vec2 x = P.position[p];
+    const bool inside = x.x() >= lo.x() && x.x() <= hi.x() && x.y() >= lo.y() && x.y() <= hi.y();
+    if (inside || !std::isfinite(x.x()) || !std::isfinite(x.y())) {
+      keep.push_back(p);
+    } else {
+      ++removed_particles_;
+      removed_mass_ += P.mass[p];
+    }
+  }
+  if (keep.size() != P.size()) particles_.permute(keep);
 }
 
 double Simulation::stable_time_step() const {
@@ -204,6 +247,8 @@ void Simulation::particles_to_grid() {
   grid_.reset();
   bucket_particles_by_strip();
   const bool thermal = scene_.thermal.conduction;
+  const bool heat_capacity = thermal || has_friction_;
+  const bool has_rigid = !rigid_.empty();  // the position check needs sum S m x
   const Vec2 b = scene_.body_force;
   Particles& P = particles_;
   Grid& G = grid_;
@@ -215,7 +260,7 @@ void Simulation::particles_to_grid() {
     const Vec2 mv = m * P.velocity[p];
     const Mat2 sigma = P.stress[p].in_plane();
     const double V = P.volume[p];
-    const double mc = thermal ? m * scene_.materials[P.material[p]].specific_heat : 0.0;
+    const double mc = heat_capacity ? m * scene_.materials[P.material[p]].specific_heat : 0.0;
     for (int a = 0; a < 3; ++a)
       for (int c = 0; c < 3; ++c) {
         const double w = st.w[a][c];
@@ -225,12 +270,9 @@ void Simulation::particles_to_grid() {
         G.mass[n] += w * m;
         G.momentum[n] += w * mv;
         G.force[n] += -V * (sigma * grad) + (w * m) * b;
-        G.mass_position[n] += (w * m) * P.position[p];
-        G.mass_gradient[n] += m * grad;
-        if (thermal) {
-          G.heat_capacity[n] += w * mc;
-          G.temperature[n] += w * mc * P.temperature[p];  // sum S m c T; divided below
-        }
+        if (has_rigid) G.mass_position[n] += (w * m) * P.position[p];
+        if (heat_capacity) G.heat_capacity[n] += w * mc;
+        if (thermal) G.temperature[n] += w * mc * P.temperature[p];  // sum S m c T; divided below
       }
   });
   const std::size_t nn = G.node_count();
@@ -338,8 +380,11 @@ void Simulation::apply_rigid_contact(std::vector<Vec2>& v, double dt, ContactPas
           const Vec2 dp = m * dv;  // momentum given to the material by the rigid body
           impulse += dp;
           work += dp.dot(vr);
-          // Kinetic energy lost to sliding in the rigid body's frame = frictional work.
-          friction_work += 0.5 * m * (vt.squaredNorm() - new_rel.squaredNorm());
+          // Kinetic energy lost to sliding in the rigid body's frame = frictional work; it becomes
+          // heat in the deformable body at this node (a rigid tool takes none).
+          const double q = 0.5 * m * (vt.squaredNorm() - new_rel.squaredNorm());
+          friction_work += q;
+          G.friction_heat[n] += q;
         }
       }
     }
@@ -350,6 +395,7 @@ void Simulation::apply_rigid_contact(std::vector<Vec2>& v, double dt, ContactPas
       rigid_[r].work += work;
       energy_.external_work += work;
       energy_.friction += friction_work;
+      energy_.heat += friction_work;
     }
   }
 }

@@ -66,11 +66,15 @@ class Simulation {
   long step_count() const { return step_; }
   double last_dt() const { return dt_; }
   void set_clock(double time, long step) { time_ = time; step_ = step; }  // restarts only
+  void set_last_dt(double dt) { dt_ = dt; }  // restarts only
 
   // Time step the next step() will take: CFL limit, capped so the run ends at end_time.
   double stable_time_step() const;
   Vec2 total_momentum() const;  // kg m/s per m
   double max_temperature() const;
+  long removed_particles() const { return removed_particles_; }
+  double removed_mass() const { return removed_mass_; }
+  void set_removed(long count, double mass) { removed_particles_ = count; removed_mass_ = mass; }  // restarts only
   // Recomputes kinetic and elastic energy from the particles (dissipation terms are kept).
   void refresh_energy();
 
@@ -85,6 +89,8 @@ class Simulation {
   void remap_momentum_musl();
   void update_particle_stress(double dt);
   void conduct_heat(double dt);
+  void deposit_frictional_heat();
+  void remove_escaped_particles();
   void check_guards() const;
   void sort_particles_by_cell();
 
@@ -102,6 +108,9 @@ class Simulation {
   std::vector<ShapeFunction> shapes_;  // one per body (uGIMP lp depends on its particles per cell)
   std::vector<RigidPolygon> rigid_geometry_;  // outlines at t = 0; current = outline + displacement
   double node_mass_cutoff_ = 0.0;             // nodes lighter than this count as empty, kg/m
+  bool has_friction_ = false;                 // some rigid body has mu > 0: frictional heating
+  long removed_particles_ = 0;                // left the domain (remove_escaping_particles)
+  double removed_mass_ = 0.0;                 // kg/m
   // Scratch, reused every step
   std::vector<Vec2> position_new_;
   std::vector<std::size_t> strip_order_;  // particle indices grouped by strip of grid rows

@@ -7,7 +7,7 @@
 
 namespace mpmcut {
 
-double Material::wave_speed(const Particles&, std::size_t) const { return params_.p_wave_speed(); }
+double Material::wave_speed(const Particles&, std::size_t) const { return p_wave_speed_; }
 
 double Material::elastic_energy(const Particles& p, std::size_t i) const {
   // Complementary energy of a linear isotropic solid: p^2/(2K) + s:s/(4G), per unit volume.

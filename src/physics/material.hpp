@@ -14,6 +14,7 @@ struct ConstitutiveIncrement {
   double plastic_work = 0.0;        // sigma_y * d(eps_p) * V
   double heat = 0.0;                // Taylor-Quinney part of the plastic work turned into heat
   double damage_dissipation = 0.0;  // energy released by damage softening
+  double viscous_dissipation = 0.0; // work of the artificial bulk viscosity (>= 0)
 };
 
 // Everything a stress update needs besides the particle itself.
@@ -24,7 +25,7 @@ struct StepContext {
 
 class Material {
  public:
-  explicit Material(const MaterialParameters& params) : params_(params) {}
+  explicit Material(const MaterialParameters& params) : params_(params), p_wave_speed_(params.p_wave_speed()) {}
   virtual ~Material() = default;
   const MaterialParameters& parameters() const { return params_; }
 
@@ -41,6 +42,7 @@ class Material {
 
  protected:
   MaterialParameters params_;
+  double p_wave_speed_;  // elastic, m/s: cached, it is asked for every particle every step
 };
 
 // Builds the model named in params.model; throws std::invalid_argument if unknown.

@@ -71,3 +71,31 @@ TEST(ShapeFunctions, UGimpGradientIsContinuousAcrossNodes) {
   EXPECT_NEAR(gimp.gradient_1d(e), gimp.gradient_1d(-e), 1e-7);
   EXPECT_NEAR(hat.gradient_1d(e) - hat.gradient_1d(-e), -2.0, 1e-12);
 }
+
+// The closed-form stencil used in the transfers equals the region-by-region definition.
+TEST(ShapeFunctions, StencilMatchesPiecewiseDefinition) {
+  for (auto kind : {ShapeFunctionKind::Linear, ShapeFunctionKind::UGimp})
+    for (int ppc : {1, 2, 3, 4}) {
+      const double h = 0.5;
+      ShapeFunction sf(kind, h, ppc);
+      for (double ux = 3.0001; ux < 6.0; ux += 0.00731) {  // off the nodes, where linear hats have a kink
+        Stencil st;
+        sf.evaluate(ux, 4.3, st);
+        double wy = 0.0;
+        for (int b = 0; b < 3; ++b) wy += st.w[0][b];
+        for (int a = 0; a < 3; ++a) {
+          const double xi = (ux - (st.i0 + a)) * h;
+          double w = 0.0, dx = 0.0;
+          for (int b = 0; b < 3; ++b) {
+            w += st.w[a][b];
+            dx += st.dwdx[a][b];
+          }
+          ASSERT_NEAR(w, sf.weight_1d(xi), 1e-13) << "ux " << ux << " node " << a;
+          ASSERT_NEAR(dx, sf.gradient_1d(xi), 1e-12) << "ux " << ux << " node " << a;
+        }
+        // Nodes outside the 3-node stencil carry no weight.
+        ASSERT_EQ(sf.weight_1d((ux - (st.i0 - 1)) * h), 0.0);
+        ASSERT_EQ(sf.weight_1d((ux - (st.i0 + 3)) * h), 0.0);
+      }
+    }
+}

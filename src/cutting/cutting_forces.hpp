@@ -1,0 +1,35 @@
+#pragma once
+// Cutting and thrust forces from the tool's contact impulses: forces.csv during the run and
+// the steady-state means in summary.json.
+#include <filesystem>
+#include <optional>
+
+#include "core/tensor.hpp"
+#include "cutting/cutting_parameters.hpp"
+#include "io/csv_writer.hpp"
+#include "io/run_observer.hpp"
+
+namespace mpmcut {
+
+// Sign conventions: the tool moves along -x. The cutting force F_c is the force along the
+// cutting velocity needed to push the tool (= x component of the material's force on the
+// tool); the thrust force F_t is normal to the machined surface, positive when the material
+// pushes the tool away from the workpiece (+y). Per unit width: N/m, reported in N/mm.
+class CuttingForcesObserver final : public RunObserver {
+ public:
+  CuttingForcesObserver(const CuttingParameters& c, const std::filesystem::path& result_dir, bool append = false);
+  void after_step(const Simulation& sim) override;
+  void at_history(const Simulation& sim) override;
+  void flush() override { csv_.flush(); }
+  void at_finish(const Simulation& sim, nlohmann::json& summary) override;
+
+ private:
+  CuttingParameters c_;
+  CsvWriter csv_;
+  double last_row_time_ = 0.0;
+  Vec2 last_row_impulse_ = Vec2::Zero();
+  double steady_start_time_ = 0.0;
+  std::optional<Vec2> steady_start_impulse_;
+};
+
+}  // namespace mpmcut

@@ -1,0 +1,33 @@
+#pragma once
+// Process parameters of an orthogonal cut, as a machining engineer states them. The cutting
+// preset turns them into a Scene (cutting_scene.hpp); the solver never sees them.
+#include <string>
+
+namespace mpmcut {
+
+struct CuttingParameters {
+  std::string material;              // a [[material]] of the case or a library set name
+  double cutting_speed = 0.0;        // V, m/s (the tool moves at -V along x)
+  double uncut_chip_thickness = 0.0; // t0 (feed), m
+  double width_of_cut = 1e-3;        // b, m: converts forces per unit width into N
+  double cut_length = 0.0;           // tool travel, m
+  double workpiece_length = 0.0;     // m; 0 = cut_length + 4 t0 + 10 cells
+  double workpiece_height = 0.0;     // m; 0 = 4 t0
+  double rake_angle_deg = 0.0;       // alpha, degrees (positive: sharper tool)
+  double clearance_angle_deg = 11.0; // gamma, degrees
+  double edge_radius = 5e-6;         // r, m
+  double tool_length = 0.0;          // along the machined surface, m; 0 = max(3 t0, 0.3 mm)
+  double tool_height = 0.0;          // above the cutting edge, m; 0 = max(4 t0, 0.4 mm)
+  double friction = 0.35;            // Coulomb mu, tool-chip, -
+  double initial_temperature = 298.0;// K
+  double cell_size = 0.0;            // h, m; 0 = t0 / 10
+  int particles_per_cell = 2;        // per direction
+  bool conduction = true;            // heat conduction in the workpiece
+  double chip_room = 0.0;            // free space above the workpiece for the chip, m; 0 = automatic
+  int snapshots = 20;                // VTU snapshots over the cut
+  double steady_start_fraction = 0.4;// steady window starts after this fraction of the cut (and >= 3 t0 of travel)
+
+  bool operator==(const CuttingParameters&) const = default;
+};
+
+}  // namespace mpmcut

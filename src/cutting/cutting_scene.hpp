@@ -1,0 +1,17 @@
+#pragma once
+// The cutting preset: process parameters -> a general Scene (workpiece, tool, grid, boundary
+// conditions, outputs). The result is written next to the results as scene.toml, so a user
+// can see and edit exactly what ran.
+#include "core/scene.hpp"
+#include "cutting/cutting_parameters.hpp"
+
+namespace mpmcut {
+
+// `material` is the resolved workpiece material. Throws std::invalid_argument naming the
+// parameter when the combination cannot be built (e.g. a cell larger than the chip).
+Scene build_cutting_scene(const CuttingParameters& c, const MaterialParameters& material);
+
+// The tool travel after which the chip is taken as formed (start of the steady window), m.
+double steady_window_start_travel(const CuttingParameters& c);
+
+}  // namespace mpmcut

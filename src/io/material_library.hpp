@@ -1,0 +1,39 @@
+#pragma once
+// Named material parameter sets (Ti-6Al-4V Johnson–Cook sets with their sources, generic elastic
+// materials), read from materials/*.toml. The built-in library is compiled into the program.
+// A library file has the same [[material]] tables as a case file; see docs/materials.md.
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/scene.hpp"
+#include "io/toml_reader.hpp"
+
+namespace mpmcut {
+
+class MaterialLibrary {
+ public:
+  // Adds every [[material]] of a library file; a set may start from an earlier one (`library = ...`).
+  // Throws InputError (naming `source_name`) for invalid or duplicate sets.
+  void add_file(std::string_view toml_text, const std::string& source_name);
+
+  const MaterialParameters* find(std::string_view set_name) const;  // nullptr if unknown
+  std::vector<std::string> names() const;                           // in file order
+  const std::vector<MaterialParameters>& sets() const { return sets_; }
+
+ private:
+  std::vector<MaterialParameters> sets_;
+};
+
+// The library built from materials/*.toml at compile time (parsed once, on first use).
+const MaterialLibrary& builtin_material_library();
+
+// Reads and validates one [[material]] table (case file or library file). With `library = "<set>"`
+// it starts from that set of `library` and every other key overrides; otherwise it is a full
+// definition. fracture_toughness K_IC is converted to fracture_energy G_f = K_IC^2 (1 - nu^2) / E.
+MaterialParameters read_material(TableReader& table, const MaterialLibrary& library);
+
+// G_f = K_IC^2 (1 - nu^2) / E (plane strain, LEFM; algorithms.md §5.3), J/m^2.
+double fracture_energy_from_toughness(double toughness_Pa_sqrt_m, double youngs_modulus, double poisson_ratio);
+
+}  // namespace mpmcut

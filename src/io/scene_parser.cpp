@@ -1,0 +1,432 @@
+#include "io/scene_parser.hpp"
+
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "io/embedded_text.hpp"
+#include "io/material_library.hpp"
+#include "io/toml_reader.hpp"
+
+namespace mpmcut {
+
+namespace {
+
+std::string vec_text(const Vec2& v) { return fmt::format("[{}, {}]", v.x(), v.y()); }
+
+// ---------------------------------------------------------------------------------------------
+// --set overrides: edit the TOML tree before it is read, so that an overridden value is
+// validated exactly like one written in the file (and an unknown key is reported as unknown).
+
+struct PathStep {
+  std::string key;
+  std::optional<std::size_t> index;  // body[2] -> key "body", index 2
+};
+
+std::string trim(std::string_view s) {
+  const auto first = s.find_first_not_of(" \t");
+  if (first == std::string_view::npos) return {};
+  return std::string(s.substr(first, s.find_last_not_of(" \t") - first + 1));
+}
+
+bool all_digits(std::string_view s) {
+  return !s.empty() && std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isdigit(c); });
+}
+
+// "body[0].velocity" or "body.0.velocity" -> {body,0}, {velocity}
+std::vector<PathStep> parse_key_path(const std::string& path, const std::string& error_prefix) {
+  std::vector<PathStep> steps;
+  auto bad = [&](std::string_view why) -> InputError {
+    return InputError(fmt::format("{}invalid key path '{}': {}", error_prefix, path, why));
+  };
+  std::size_t start = 0;
+  while (start <= path.size()) {
+    const std::size_t dot = std::min(path.find('.', start), path.size());
+    std::string segment = path.substr(start, dot - start);
+    start = dot + 1;
+    if (all_digits(segment)) {  // "body.0": an index into the previous key
+      if (steps.empty() || steps.back().index) throw bad("an index must follow an array name");
+      steps.back().index = std::stoul(segment);
+      continue;
+    }
+    PathStep step;
+    if (const auto open = segment.find('['); open != std::string::npos) {
+      if (segment.back() != ']' || !all_digits(segment.substr(open + 1, segment.size() - open - 2)))
+        throw bad("expected name[index]");
+      step.index = std::stoul(segment.substr(open + 1, segment.size() - open - 2));
+      segment.resize(open);
+    }
+    if (segment.empty()) throw bad("empty key");
+    step.key = segment;
+    steps.push_back(std::move(step));
+  }
+  return steps;
+}
+
+std::string canonical_path(const std::vector<PathStep>& steps) {
+  std::string path;
+  for (const auto& s : steps) {
+    path += (path.empty() ? "" : ".") + s.key;
+    if (s.index) path += fmt::format("[{}]", *s.index);
+  }
+  return path;
+}
+
+void apply_override(toml::table& root, const std::string& text, InputSource& source) {
+  const std::string prefix = fmt::format("{}: --set '{}': ", source.name, text);
+  const auto eq = text.find('=');
+  if (eq == std::string::npos) throw InputError(prefix + "expected key=value");
+  const std::vector<PathStep> steps = parse_key_path(trim(std::string_view(text).substr(0, eq)), prefix);
+  const std::string value_text = trim(std::string_view(text).substr(eq + 1));
+  source.overrides.push_back({canonical_path(steps), text});
+
+  // The value as TOML ("0.3", "[1, 0]", "true", "\"usl\""), else a bare string ("usl").
+  toml::table parsed;
+  try {
+    parsed = toml::parse(std::string_view("v = " + value_text), std::string_view("--set '" + text + "'"));
+  } catch (const toml::parse_error&) {
+  }
+  toml::node* parsed_value = parsed.size() == 1 ? parsed.get("v") : nullptr;
+  auto assign = [&](auto&& place) {
+    if (parsed_value) parsed_value->visit([&](auto& v) { place(std::move(v)); });
+    else place(toml::value<std::string>(value_text));
+  };
+
+  toml::table* table = &root;
+  std::string walked;
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    const PathStep& step = steps[i];
+    const bool last = i + 1 == steps.size();
+    walked += (walked.empty() ? "" : ".") + step.key;
+    toml::node* child = table->get(step.key);
+    if (!step.index) {
+      if (last) {
+        assign([&](auto&& v) { table->insert_or_assign(step.key, std::move(v)); });
+        return;
+      }
+      // A missing table ([thermal], say) is created; a key outside the schema is then reported
+      // as unknown when the scene is read.
+      if (child == nullptr) child = &table->insert(step.key, toml::table{}).first->second;
+      if (!child->is_table()) throw InputError(prefix + fmt::format("'{}' is not a table", walked));
+      table = child->as_table();
+      continue;
+    }
+    toml::array* array = child ? child->as_array() : nullptr;
+    if (array == nullptr) throw InputError(prefix + fmt::format("'{}' is not an array in the case", walked));
+    if (*step.index >= array->size())
+      throw InputError(prefix + fmt::format("index {} is out of range: '{}' has {} entries", *step.index, walked,
+                                            array->size()));
+    walked += fmt::format("[{}]", *step.index);
+    if (last) {
+      assign([&](auto&& v) { array->replace(array->cbegin() + static_cast<std::ptrdiff_t>(*step.index), std::move(v)); });
+      return;
+    }
+    table = array->get(*step.index)->as_table();
+    if (table == nullptr) throw InputError(prefix + fmt::format("'{}' is not a table", walked));
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Geometry checks
+
+double signed_area(const std::vector<Vec2>& v) {
+  double a = 0.0;
+  for (std::size_t i = 0, j = v.size() - 1; i < v.size(); j = i++) a += v[j].x() * v[i].y() - v[i].x() * v[j].y();
+  return 0.5 * a;
+}
+
+double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+// Closed segments pq and rs share a point (touching counts: the polygon would not be simple).
+bool segments_intersect(const Vec2& p, const Vec2& q, const Vec2& r, const Vec2& s) {
+  auto orient = [](const Vec2& a, const Vec2& b, const Vec2& c) {
+    const double o = cross(b - a, c - a);
+    return (o > 0.0) - (o < 0.0);
+  };
+  auto on_segment = [](const Vec2& a, const Vec2& b, const Vec2& c) {  // c collinear with ab
+    return c.x() >= std::min(a.x(), b.x()) && c.x() <= std::max(a.x(), b.x()) && c.y() >= std::min(a.y(), b.y()) &&
+           c.y() <= std::max(a.y(), b.y());
+  };
+  const int o1 = orient(p, q, r), o2 = orient(p, q, s), o3 = orient(r, s, p), o4 = orient(r, s, q);
+  if (o1 != o2 && o3 != o4) return true;
+  return (o1 == 0 && on_segment(p, q, r)) || (o2 == 0 && on_segment(p, q, s)) || (o3 == 0 && on_segment(r, s, p)) ||
+         (o4 == 0 && on_segment(r, s, q));
+}
+
+// A polygon read from `key`, checked to be simple with non-zero area.
+Polygon read_polygon(TableReader& t, std::string_view key) {
+  std::vector<Vec2> v = t.points(key);
+  // Users often repeat the first vertex to close the outline; the closing edge is implicit.
+  if (v.size() > 3 && v.front() == v.back()) v.pop_back();
+  if (v.size() < 3) t.fail(key, fmt::format("a polygon needs at least 3 vertices, got {}", v.size()));
+  Vec2 lo = v[0], hi = v[0];
+  for (const auto& p : v) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  const std::size_t n = v.size();
+  for (std::size_t i = 0; i < n; ++i)
+    if (v[i] == v[(i + 1) % n]) t.fail(key, fmt::format("degenerate polygon: vertex {} repeats vertex {}", (i + 1) % n, i));
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 2; j < n; ++j) {
+      if (i == 0 && j == n - 1) continue;  // adjacent through the closing edge
+      if (segments_intersect(v[i], v[(i + 1) % n], v[j], v[(j + 1) % n]))
+        t.fail(key, fmt::format("polygon is not simple: edge {}-{} crosses edge {}-{}", i, (i + 1) % n, j, (j + 1) % n));
+    }
+  if (std::abs(signed_area(v)) <= 1e-12 * (hi - lo).squaredNorm())
+    t.fail(key, "degenerate polygon: zero area (all vertices on one line)");
+  return Polygon{std::move(v)};
+}
+
+// ---------------------------------------------------------------------------------------------
+// Sections
+
+GridSpec read_grid(TableReader t) {
+  GridSpec g;
+  t.require_key("cell_size", "background grid cell size h, m");
+  t.require_key("min", "lower-left corner [x, y], m");
+  t.require_key("max", "upper-right corner [x, y], m");
+  g.cell_size = t.number("cell_size", 0.0);
+  g.min = t.vec2("min", g.min);
+  g.max = t.vec2("max", g.max);
+  t.check("cell_size", g.cell_size > 0.0, "a positive length (m)", g.cell_size);
+  t.check("max", (g.max.array() > g.min.array()).all(), "greater than grid.min = " + vec_text(g.min) + " in x and y", 0.0);
+  const Vec2 size = g.max - g.min;
+  t.check("cell_size", g.cell_size <= size.minCoeff(),
+          fmt::format("at most the domain size ({} x {})", size.x(), size.y()), g.cell_size);
+  t.reject_unknown_keys();
+  return g;
+}
+
+BoundaryKind read_boundary(TableReader& t, std::string_view side) {
+  return t.choice<BoundaryKind>(
+      side, {{"free", BoundaryKind::Free}, {"fixed", BoundaryKind::Fixed}, {"roller", BoundaryKind::Roller}},
+      BoundaryKind::Free);
+}
+
+BoundarySpec read_boundaries(std::optional<TableReader> t) {
+  BoundarySpec b;
+  if (!t) return b;
+  b.left = read_boundary(*t, "left");
+  b.right = read_boundary(*t, "right");
+  b.bottom = read_boundary(*t, "bottom");
+  b.top = read_boundary(*t, "top");
+  t->reject_unknown_keys();
+  return b;
+}
+
+SolverSpec read_solver(TableReader t) {
+  SolverSpec s;
+  s.shape_function = t.choice<ShapeFunctionKind>(
+      "shape_function", {{"ugimp", ShapeFunctionKind::UGimp}, {"linear", ShapeFunctionKind::Linear}}, s.shape_function);
+  s.scheme = t.choice<TimeScheme>("scheme", {{"musl", TimeScheme::MUSL}, {"usl", TimeScheme::USL}}, s.scheme);
+  s.cfl = t.number("cfl", s.cfl);
+  t.check("cfl", s.cfl > 0.0 && s.cfl <= 1.0, "in (0, 1]", s.cfl);
+  s.flip_fraction = t.number("flip_fraction", s.flip_fraction);
+  t.check("flip_fraction", s.flip_fraction >= 0.0 && s.flip_fraction <= 1.0, "in [0, 1]", s.flip_fraction);
+  t.require_key("end_time", "simulated time, s");
+  s.end_time = t.number("end_time", s.end_time);
+  t.check("end_time", s.end_time > 0.0, "a positive time (s)", s.end_time);
+  s.max_steps = t.integer("max_steps", s.max_steps);
+  t.check("max_steps", s.max_steps >= 0, "an integer >= 0 (0 = unlimited)", static_cast<double>(s.max_steps));
+  s.fixed_time_step = t.number("fixed_time_step", s.fixed_time_step);
+  t.check("fixed_time_step", s.fixed_time_step >= 0.0, ">= 0 (s; 0 = from the CFL condition)", s.fixed_time_step);
+  s.remove_escaping_particles = t.boolean("remove_escaping_particles", s.remove_escaping_particles);
+  s.contact_distance_cells = t.number("contact_distance_cells", s.contact_distance_cells);
+  t.check("contact_distance_cells", s.contact_distance_cells >= 0.0, ">= 0 (cells)", s.contact_distance_cells);
+  t.reject_unknown_keys();
+  return s;
+}
+
+OutputSpec read_output(std::optional<TableReader> t) {
+  OutputSpec o;
+  if (!t) return o;
+  o.snapshot_interval = t->number("snapshot_interval", o.snapshot_interval);
+  t->check("snapshot_interval", o.snapshot_interval >= 0.0, ">= 0 (s; 0 = first and last only)", o.snapshot_interval);
+  o.history_interval = t->number("history_interval", o.history_interval);
+  t->check("history_interval", o.history_interval >= 0.0, ">= 0 (s; 0 = every step)", o.history_interval);
+  o.vtu = t->boolean("vtu", o.vtu);
+  t->reject_unknown_keys();
+  return o;
+}
+
+ThermalSpec read_thermal(std::optional<TableReader> t) {
+  ThermalSpec th;
+  if (!t) return th;
+  th.conduction = t->boolean("conduction", th.conduction);
+  for (auto [side, value] : {std::pair{"left", &th.left}, {"right", &th.right}, {"bottom", &th.bottom}, {"top", &th.top}}) {
+    *value = t->optional_number(side);
+    if (*value) t->check(side, **value > 0.0, "a positive temperature (K), or absent for an insulated side", **value);
+  }
+  t->reject_unknown_keys();
+  return th;
+}
+
+Shape read_shape(TableReader& t, const GridSpec& grid) {
+  const int count = int(t.has("rectangle")) + int(t.has("disk")) + int(t.has("polygon"));
+  if (count != 1)
+    t.fail_table(fmt::format("needs exactly one shape (rectangle = {{min = [x, y], max = [x, y]}}, disk = {{center = "
+                             "[x, y], radius = r}} or polygon = [[x, y], ...]), got {}",
+                             count));
+  Shape shape;
+  std::string key;
+  if (auto r = t.optional_table("rectangle")) {
+    key = "rectangle";
+    shape.kind = ShapeKind::Rectangle;
+    r->require_key("min", "lower-left corner [x, y], m");
+    r->require_key("max", "upper-right corner [x, y], m");
+    shape.rectangle.min = r->vec2("min", Vec2::Zero());
+    shape.rectangle.max = r->vec2("max", Vec2::Zero());
+    r->check("max", (shape.rectangle.max.array() > shape.rectangle.min.array()).all(),
+             "greater than min = " + vec_text(shape.rectangle.min) + " in x and y", 0.0);
+    r->reject_unknown_keys();
+  } else if (auto d = t.optional_table("disk")) {
+    key = "disk";
+    shape.kind = ShapeKind::Disk;
+    d->require_key("center", "[x, y], m");
+    d->require_key("radius", "m");
+    shape.disk.center = d->vec2("center", Vec2::Zero());
+    shape.disk.radius = d->number("radius", 0.0);
+    d->check("radius", shape.disk.radius > 0.0, "a positive length (m)", shape.disk.radius);
+    d->reject_unknown_keys();
+  } else {
+    key = "polygon";
+    shape.kind = ShapeKind::Polygon;
+    shape.polygon = read_polygon(t, "polygon");
+  }
+  // Particles outside the grid would be lost on the first step.
+  Vec2 lo, hi;
+  shape.bounds(lo, hi);
+  const double tol = 1e-12 * (grid.max - grid.min).norm();
+  if ((lo.array() < grid.min.array() - tol).any() || (hi.array() > grid.max.array() + tol).any())
+    t.fail(key, fmt::format("the shape (bounding box {} to {}) must lie inside the grid domain {} to {}", vec_text(lo),
+                            vec_text(hi), vec_text(grid.min), vec_text(grid.max)));
+  return shape;
+}
+
+std::string list_names(const std::vector<MaterialParameters>& materials) {
+  std::string text;
+  for (const auto& m : materials) text += (text.empty() ? "" : ", ") + ("\"" + m.name + "\"");
+  return text.empty() ? "(none)" : text;
+}
+
+BodySpec read_body(TableReader t, const Scene& scene) {
+  BodySpec b;
+  t.require_key("name", "identifies the body in outputs");
+  t.require_key("material", "name of a [[material]]");
+  b.name = t.string("name", "");
+  t.check("name", !b.name.empty(), "a non-empty string", 0.0);
+  b.material = t.string("material", "");
+  const int m = scene.material_index(b.material);
+  if (m < 0)
+    t.fail("material", fmt::format("no [[material]] named \"{}\"; defined materials: {}", b.material,
+                                   list_names(scene.materials)));
+  b.shape = read_shape(t, scene.grid);
+  const long ppc = t.integer("particles_per_cell", b.particles_per_cell);
+  t.check("particles_per_cell", ppc >= 1 && ppc <= 8, "an integer between 1 and 8 (per direction)", ppc);
+  b.particles_per_cell = static_cast<int>(ppc);
+  b.velocity = t.vec2("velocity", b.velocity);
+  // Starting at the material's reference temperature means no thermal softening at rest.
+  b.temperature = t.number("temperature", scene.materials[m].room_temperature);
+  t.check("temperature", b.temperature > 0.0, "a positive temperature (K)", b.temperature);
+  t.reject_unknown_keys();
+  return b;
+}
+
+RigidBodySpec read_rigid_body(TableReader t) {
+  RigidBodySpec r;
+  t.require_key("name", "identifies the rigid body in outputs (forces)");
+  t.require_key("polygon", "outline [[x, y], ...] at t = 0, m");
+  r.name = t.string("name", "");
+  t.check("name", !r.name.empty(), "a non-empty string", 0.0);
+  r.polygon = read_polygon(t, "polygon");
+  r.rounding_radius = t.number("rounding_radius", r.rounding_radius);
+  t.check("rounding_radius", r.rounding_radius >= 0.0, ">= 0 (m)", r.rounding_radius);
+  r.velocity = t.vec2("velocity", r.velocity);
+  r.friction = t.number("friction", r.friction);
+  t.check("friction", r.friction >= 0.0, ">= 0 (Coulomb coefficient)", r.friction);
+  t.reject_unknown_keys();
+  return r;
+}
+
+Scene read_scene(const toml::table& root, const std::shared_ptr<const InputSource>& source) {
+  TableReader top(root, "", source);
+  Scene scene;
+  scene.source_file = source->name;
+  scene.title = top.string("title", "");
+  scene.grid = read_grid(top.table("grid"));
+  scene.boundaries = read_boundaries(top.optional_table("boundaries"));
+  scene.solver = read_solver(top.table("solver"));
+  scene.output = read_output(top.optional_table("output"));
+  scene.thermal = read_thermal(top.optional_table("thermal"));
+  scene.body_force = top.vec2("body_force", scene.body_force);
+
+  const MaterialLibrary& library = builtin_material_library();
+  for (TableReader& t : top.array_of_tables("material")) {
+    MaterialParameters m = read_material(t, library);
+    if (scene.material_index(m.name) >= 0) t.fail("name", fmt::format("duplicate material name \"{}\"", m.name));
+    // Conduction divides by the heat capacity m c of each node.
+    if (scene.thermal.conduction)
+      t.check("specific_heat", m.specific_heat > 0.0, "positive (J/(kg K)) when thermal.conduction = true",
+              m.specific_heat);
+    scene.materials.push_back(std::move(m));
+  }
+
+  // Bodies and rigid bodies share one namespace: outputs (forces, fields) are keyed by name.
+  std::vector<std::string> names;
+  auto claim_name = [&](TableReader& t, const std::string& name) {
+    if (std::find(names.begin(), names.end(), name) != names.end())
+      t.fail("name", fmt::format("duplicate body name \"{}\" (bodies and rigid bodies need distinct names)", name));
+    names.push_back(name);
+  };
+  for (TableReader& t : top.array_of_tables("body")) {
+    scene.bodies.push_back(read_body(t, scene));
+    claim_name(t, scene.bodies.back().name);
+  }
+  if (scene.bodies.empty()) {
+    if (top.has("body")) top.fail("body", "a scene needs at least one deformable body, got none");
+    top.fail_table("no [[body]] entries: a scene needs at least one deformable body");
+  }
+  for (TableReader& t : top.array_of_tables("rigid_body")) {
+    scene.rigid_bodies.push_back(read_rigid_body(t));
+    claim_name(t, scene.rigid_bodies.back().name);
+  }
+  top.reject_unknown_keys();
+  return scene;
+}
+
+}  // namespace
+
+Scene parse_scene(std::string_view toml_text, const std::string& source_name, const std::vector<std::string>& overrides) {
+  toml::table root;
+  try {
+    root = toml::parse(toml_text, std::string_view(source_name));
+  } catch (const toml::parse_error& e) {
+    throw InputError(fmt::format("{}:{}:{}: TOML syntax error: {}", source_name, e.source().begin.line,
+                                 e.source().begin.column, e.description()));
+  }
+  auto source = std::make_shared<InputSource>(InputSource{source_name, {}});
+  for (const std::string& o : overrides) apply_override(root, o, *source);
+  return read_scene(root, source);
+}
+
+Scene load_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec))
+    throw InputError(fmt::format("{}: cannot read case file: {}", file.string(),
+                                 std::filesystem::exists(file, ec) ? "not a regular file" : "no such file"));
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in) throw InputError(fmt::format("{}: cannot read case file", file.string()));
+  return parse_scene(text.str(), file.string(), overrides);
+}
+
+Scene default_elastic_demo_scene(const std::vector<std::string>& overrides) {
+  for (const EmbeddedText& file : embedded_texts())
+    if (file.path == "cases/elastic_demo.toml")
+      return parse_scene(file.text, "built-in " + std::string(file.path), overrides);
+  throw InputError("the built-in demo case is missing from this build");
+}
+
+}  // namespace mpmcut

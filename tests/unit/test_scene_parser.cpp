@@ -1,0 +1,515 @@
+// Case file -> Scene (docs/input.md): the shipped cases parse, every validation rule gives an
+// InputError naming file:line:column and the key, --set overrides, library sets with per-key
+// overrides, and write_scene -> parse_scene round trips.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <numbers>
+#include <sstream>
+
+#include "io/input_error.hpp"
+#include "io/material_library.hpp"
+#include "io/scene_parser.hpp"
+#include "io/scene_writer.hpp"
+
+namespace mpmcut {
+
+namespace {
+
+// Field-wise equality of everything a case file describes. (Scene::cutting, set only by the
+// cutting preset, is not part of the case-file format.) On failure prints both as TOML.
+void expect_same_scene(const Scene& a, const Scene& b) {
+  const bool same = a.title == b.title && a.source_file == b.source_file && a.grid == b.grid &&
+                    a.boundaries == b.boundaries && a.thermal == b.thermal && a.solver == b.solver &&
+                    a.output == b.output && a.body_force == b.body_force && a.materials == b.materials &&
+                    a.bodies == b.bodies && a.rigid_bodies == b.rigid_bodies;
+  if (same) return;
+  std::ostringstream ta, tb;
+  write_scene(a, ta);
+  write_scene(b, tb);
+  ADD_FAILURE() << "scenes differ:\n" << ta.str() << "\n--- versus ---\n" << tb.str();
+}
+
+const std::filesystem::path kCases = std::filesystem::path(MPMCUT_SOURCE_DIR) / "cases";
+
+// A small valid case that the error tests break in one place each.
+const std::string kBase = R"(title = "base"
+
+[grid]
+cell_size = 0.1
+min = [0.0, 0.0]
+max = [1.0, 1.0]
+
+[solver]
+end_time = 1.0
+
+[[material]]
+name = "m"
+library = "elastic-unit"
+
+[[body]]
+name = "b"
+material = "m"
+rectangle = { min = [0.2, 0.2], max = [0.4, 0.4] }
+)";
+
+// kBase with `from` replaced by `to` (which must occur).
+std::string edit(const std::string& from, const std::string& to, std::string text = kBase) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << "test bug: '" << from << "' not in the case";
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+// 1-based line of the first occurrence of `marker`.
+int line_of(const std::string& text, const std::string& marker) {
+  const auto at = text.find(marker);
+  EXPECT_NE(at, std::string::npos) << "test bug: '" << marker << "' not in the case";
+  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
+}
+
+// The InputError message that parsing `text` gives ("" if it parses).
+std::string error_of(const std::string& text, const std::vector<std::string>& overrides = {}) {
+  try {
+    parse_scene(text, "case.toml", overrides);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// Expects an error at `line` (of `marker`) that contains every one of `parts`.
+void expect_error(const std::string& text, const std::string& marker, std::initializer_list<std::string> parts,
+                  const std::vector<std::string>& overrides = {}) {
+  const std::string message = error_of(text, overrides);
+  ASSERT_FALSE(message.empty()) << "no InputError for:\n" << text;
+  EXPECT_TRUE(message.starts_with("case.toml:" + std::to_string(line_of(text, marker)) + ":")) << message;
+  for (const auto& p : parts) EXPECT_NE(message.find(p), std::string::npos) << "'" << p << "' not in: " << message;
+}
+
+// ---------------------------------------------------------------------------------------------
+
+TEST(SceneParser, EveryShippedCaseParses) {
+  int count = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(kCases)) {
+    if (entry.path().extension() != ".toml") continue;
+    SCOPED_TRACE(entry.path().string());
+    EXPECT_NO_THROW(load_scene(entry.path()));
+    ++count;
+  }
+  EXPECT_GE(count, 3);
+}
+
+// docs/input.md's complete example must stay valid.
+TEST(SceneParser, DocumentedExampleParses) {
+  std::ifstream in(std::filesystem::path(MPMCUT_SOURCE_DIR) / "docs" / "input.md");
+  const std::string doc((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto section = doc.find("## A complete example");
+  ASSERT_NE(section, std::string::npos);
+  const auto begin = doc.find("```toml\n", section) + 8;
+  const auto end = doc.find("```", begin);
+  const Scene s = parse_scene(doc.substr(begin, end - begin), "docs/input.md");
+  EXPECT_EQ(s.bodies.size(), 2u);
+  EXPECT_EQ(s.rigid_bodies.size(), 1u);
+  EXPECT_NEAR(s.materials[0].fracture_energy, 23.5e3, 0.1e3);
+}
+
+TEST(SceneParser, BaseCaseParsesWithDefaults) {
+  const Scene s = parse_scene(kBase, "case.toml");
+  EXPECT_EQ(s.title, "base");
+  EXPECT_EQ(s.source_file, "case.toml");
+  EXPECT_DOUBLE_EQ(s.grid.cell_size, 0.1);
+  EXPECT_EQ(s.solver.scheme, TimeScheme::MUSL);
+  EXPECT_EQ(s.solver.shape_function, ShapeFunctionKind::UGimp);
+  EXPECT_DOUBLE_EQ(s.solver.cfl, 0.4);
+  EXPECT_EQ(s.boundaries.left, BoundaryKind::Free);
+  ASSERT_EQ(s.bodies.size(), 1u);
+  EXPECT_EQ(s.bodies[0].particles_per_cell, 2);
+  EXPECT_DOUBLE_EQ(s.bodies[0].temperature, s.materials[0].room_temperature);
+  EXPECT_TRUE(s.rigid_bodies.empty());
+  EXPECT_FALSE(s.thermal.left.has_value());
+}
+
+TEST(SceneParser, CollidingDisksIsSulsky1994) {
+  const Scene s = load_scene(kCases / "colliding_disks.toml");
+  EXPECT_DOUBLE_EQ(s.grid.cell_size, 0.05);
+  EXPECT_DOUBLE_EQ(s.solver.end_time, 3.0);
+  ASSERT_EQ(s.materials.size(), 1u);
+  EXPECT_DOUBLE_EQ(s.materials[0].youngs_modulus, 1000.0);
+  EXPECT_DOUBLE_EQ(s.materials[0].poisson_ratio, 0.3);
+  EXPECT_DOUBLE_EQ(s.materials[0].density, 1000.0);
+  ASSERT_EQ(s.bodies.size(), 2u);
+  EXPECT_EQ(s.bodies[0].shape.kind, ShapeKind::Disk);
+  EXPECT_EQ(s.bodies[0].shape.disk.center, Vec2(0.2, 0.2));
+  EXPECT_EQ(s.bodies[1].shape.disk.center, Vec2(0.8, 0.8));
+  EXPECT_DOUBLE_EQ(s.bodies[1].shape.disk.radius, 0.2);
+  EXPECT_EQ(s.bodies[0].velocity, Vec2(0.1, 0.1));
+  EXPECT_EQ(s.bodies[1].velocity, Vec2(-0.1, -0.1));
+  // Kinetic energy 2 * (1/2) rho pi r^2 |v|^2 = 2.513 J per unit thickness (algorithms.md §7.4).
+  const double ke = 2 * 0.5 * 1000.0 * std::numbers::pi * 0.04 * 0.02;
+  EXPECT_NEAR(ke, 2.513, 1e-3);
+}
+
+TEST(SceneParser, VibratingBarIsFixedFree) {
+  const Scene s = load_scene(kCases / "vibrating_bar.toml");
+  EXPECT_EQ(s.boundaries.left, BoundaryKind::Fixed);
+  EXPECT_EQ(s.boundaries.right, BoundaryKind::Free);
+  EXPECT_DOUBLE_EQ(s.materials[0].youngs_modulus, 100.0);
+  EXPECT_DOUBLE_EQ(s.materials[0].density, 1.0);
+  EXPECT_DOUBLE_EQ(s.materials[0].poisson_ratio, 0.0);
+  EXPECT_DOUBLE_EQ(s.bodies[0].shape.rectangle.max.x() - s.bodies[0].shape.rectangle.min.x(), 25.0);
+}
+
+TEST(SceneParser, BuiltInDemoIsTheShippedCaseAndSmall) {
+  Scene builtin = default_elastic_demo_scene();
+  Scene shipped = load_scene(kCases / "elastic_demo.toml");
+  builtin.source_file = shipped.source_file;
+  expect_same_scene(builtin, shipped);
+  // 2-5k particles: disk area over the particle spacing (h / ppc) squared.
+  const BodySpec& b = builtin.bodies.at(0);
+  const double spacing = builtin.grid.cell_size / b.particles_per_cell;
+  const double particles = std::numbers::pi * b.shape.disk.radius * b.shape.disk.radius / (spacing * spacing);
+  EXPECT_GT(particles, 2000.0);
+  EXPECT_LT(particles, 5000.0);
+  EXPECT_DOUBLE_EQ(default_elastic_demo_scene({"solver.end_time=0.1"}).solver.end_time, 0.1);
+}
+
+TEST(SceneParser, IntegersAreAcceptedAsNumbers) {
+  const Scene s = parse_scene(edit("end_time = 1.0", "end_time = 2"), "case.toml");
+  EXPECT_DOUBLE_EQ(s.solver.end_time, 2.0);
+}
+
+// --- validation -------------------------------------------------------------------------------
+
+TEST(SceneValidation, ParticlesPerCellOutOfRange) {
+  const std::string text = edit("rectangle =", "particles_per_cell = 0\nrectangle =");
+  expect_error(text, "particles_per_cell",
+               {"case.toml:" + std::to_string(line_of(text, "particles_per_cell")) +
+                    ":22: key 'body[0].particles_per_cell': must be an integer between 1 and 8",
+                "got 0"});
+  expect_error(edit("rectangle =", "particles_per_cell = 2.5\nrectangle ="), "particles_per_cell",
+               {"must be an integer", "got 2.5"});
+}
+
+TEST(SceneValidation, UnknownKeysSuggestTheClosest) {
+  expect_error(edit("end_time = 1.0", "end_time = 1.0\ncfll = 0.3"), "cfll",
+               {"key 'solver.cfll'", "unknown key", "did you mean 'cfl'?"});
+  expect_error(edit("[solver]", "[solvr]"), "title",
+               {"top level: missing required table [solver] (is 'solvr' a misspelling?)"});
+  expect_error(edit("library = \"elastic-unit\"", "library = \"elastic-unit\"\nyoungs_modulos = 3.0"),
+               "youngs_modulos", {"key 'material[0].youngs_modulos'", "did you mean 'youngs_modulus'?"});
+  expect_error(edit("max = [0.4, 0.4] }", "max = [0.4, 0.4], mid = 1 }"), "rectangle",
+               {"key 'body[0].rectangle.mid'", "did you mean 'min'?"});
+  expect_error(kBase + "zzz_completely_different = 1\n", "zzz_", {"known keys here:"});
+}
+
+TEST(SceneValidation, WrongTypes) {
+  expect_error(edit("cell_size = 0.1", "cell_size = \"big\""), "cell_size",
+               {"key 'grid.cell_size'", "must be a number", "got \"big\" (a string)"});
+  expect_error(edit("min = [0.0, 0.0]", "min = [0.0]"), "min = [0.0]", {"key 'grid.min'", "[x, y]"});
+  expect_error(edit("[grid]", "grid = 3\n[gridx]"), "grid = 3", {"key 'grid'", "must be a table"});
+  expect_error(edit("[[body]]", "[body]"), "[body]", {"key 'body'", "[[body]] entries"});
+}
+
+TEST(SceneValidation, NonPositiveSizes) {
+  expect_error(edit("cell_size = 0.1", "cell_size = 0"), "cell_size", {"key 'grid.cell_size'", "positive", "got 0"});
+  expect_error(edit("cell_size = 0.1", "cell_size = 2.0"), "cell_size",
+               {"key 'grid.cell_size'", "at most the domain size (1 x 1)", "got 2.0"});
+  expect_error(edit("max = [1.0, 1.0]", "max = [1.0, -1.0]"), "max = [1.0, -1.0]",
+               {"key 'grid.max'", "greater than grid.min"});
+  expect_error(edit("rectangle = { min = [0.2, 0.2], max = [0.4, 0.4] }", "disk = { center = [0.5, 0.5], radius = -1 }"),
+               "disk", {"key 'body[0].disk.radius'", "got -1"});
+  expect_error(edit("max = [0.4, 0.4] }", "max = [0.1, 0.4] }"), "rectangle",
+               {"key 'body[0].rectangle.max'", "greater than min"});
+}
+
+TEST(SceneValidation, MaterialConstants) {
+  const std::string full = edit("library = \"elastic-unit\"",
+                                "density = 1000.0\nyoungs_modulus = 1.0e6\npoisson_ratio = 0.3");
+  expect_error(edit("density = 1000.0", "density = -1000.0", full), "density",
+               {"key 'material[0].density'", "positive", "got -1000.0"});
+  expect_error(edit("youngs_modulus = 1.0e6", "youngs_modulus = -1.0", full), "youngs_modulus",
+               {"key 'material[0].youngs_modulus'", "got -1.0"});
+  expect_error(edit("poisson_ratio = 0.3", "poisson_ratio = 0.5", full), "poisson_ratio",
+               {"key 'material[0].poisson_ratio'", "in (-1, 0.5)", "got 0.5"});
+  // A library set with an override that makes it invalid.
+  expect_error(edit("library = \"elastic-unit\"", "library = \"elastic-unit\"\npoisson_ratio = -1.5"), "poisson_ratio",
+               {"key 'material[0].poisson_ratio'"});
+  // Missing required keys of a full definition name the [[material]] table.
+  expect_error(edit("poisson_ratio = 0.3", "", full), "[[material]]",
+               {"table 'material[0]'", "missing required key 'poisson_ratio'"});
+}
+
+TEST(SceneValidation, JohnsonCookMeltingAboveRoomTemperature) {
+  expect_error(edit("library = \"elastic-unit\"", "library = \"ti64-seo-2005\"\nmelting_temperature = 250.0"),
+               "melting_temperature",
+               {"key 'material[0].melting_temperature'", "greater than room_temperature (293 K)", "got 250.0"});
+  // Also when a full JC definition leaves out jc_A.
+  const std::string jc = edit("library = \"elastic-unit\"",
+                              "model = \"johnson_cook\"\ndensity = 1.0\nyoungs_modulus = 1.0\npoisson_ratio = 0.3\n"
+                              "jc_B = 1.0\njc_n = 1.0\njc_C = 0.0\njc_m = 1.0\nmelting_temperature = 1000.0\n"
+                              "specific_heat = 1.0");
+  expect_error(jc, "[[material]]", {"table 'material[0]'", "missing required key 'jc_A'"});
+}
+
+TEST(SceneValidation, ChoicesListTheAllowedValues) {
+  expect_error(edit("end_time = 1.0", "end_time = 1.0\nscheme = \"usf\""), "scheme",
+               {"key 'solver.scheme'", "\"musl\" | \"usl\"", "got \"usf\""});
+  expect_error(edit("[solver]", "[boundaries]\nleft = \"sticky\"\n[solver]"), "sticky",
+               {"key 'boundaries.left'", "\"free\" | \"fixed\" | \"roller\""});
+}
+
+TEST(SceneValidation, RangesOfSolverAndThermal) {
+  expect_error(edit("end_time = 1.0", "end_time = 1.0\ncfl = 1.5"), "cfl", {"key 'solver.cfl'", "(0, 1]"});
+  expect_error(edit("end_time = 1.0", "end_time = 1.0\nflip_fraction = -0.1"), "flip", {"key 'solver.flip_fraction'"});
+  expect_error(edit("end_time = 1.0", "end_time = -1.0"), "end_time", {"key 'solver.end_time'", "positive"});
+  expect_error(kBase + "[[rigid_body]]\nname = \"tool\"\npolygon = [[0, 0], [1, 0], [0, 1]]\nfriction = -0.1\n",
+               "friction", {"key 'rigid_body[0].friction'", ">= 0"});
+  expect_error(edit("[solver]", "[thermal]\nleft = -5.0\n[solver]"), "left = -5", {"key 'thermal.left'", "positive"});
+  expect_error(edit("rectangle =", "temperature = 0\nrectangle ="), "temperature", {"key 'body[0].temperature'"});
+}
+
+TEST(SceneValidation, ShapeMustLieInsideTheGrid) {
+  expect_error(edit("max = [0.4, 0.4] }", "max = [1.4, 0.4] }"), "rectangle",
+               {"key 'body[0].rectangle'", "inside the grid domain [0, 0] to [1, 1]"});
+  expect_error(edit("rectangle = { min = [0.2, 0.2], max = [0.4, 0.4] }", "disk = { center = [0.1, 0.5], radius = 0.2 }"),
+               "disk", {"key 'body[0].disk'", "bounding box [-0.1"});
+}
+
+TEST(SceneValidation, ExactlyOneShape) {
+  expect_error(edit("rectangle = { min = [0.2, 0.2], max = [0.4, 0.4] }", ""), "[[body]]",
+               {"table 'body[0]'", "exactly one shape", "got 0"});
+  expect_error(edit("rectangle =", "disk = { center = [0.5, 0.5], radius = 0.1 }\nrectangle ="), "[[body]]",
+               {"exactly one shape", "got 2"});
+}
+
+TEST(SceneValidation, BodyNeedsAnExistingMaterial) {
+  expect_error(edit("material = \"m\"", "material = \"steel\""), "material = \"steel\"",
+               {"key 'body[0].material'", "no [[material]] named \"steel\"", "defined materials: \"m\""});
+}
+
+TEST(SceneValidation, DuplicateNames) {
+  expect_error(kBase + "[[material]]\nname = \"m\"\nlibrary = \"elastic-steel\"\n", "name = \"m\"\nlibrary = \"elastic-s",
+               {"key 'material[1].name'", "duplicate material name \"m\""});
+  const std::string twice = kBase + "[[body]]\nname = \"b\"\nmaterial = \"m\"\ndisk = { center = [0.7, 0.7], radius = 0.1 }\n";
+  expect_error(twice, "name = \"b\"\nmaterial = \"m\"\ndisk", {"key 'body[1].name'", "duplicate body name \"b\""});
+  expect_error(kBase + "[[rigid_body]]\nname = \"b\"\npolygon = [[0, 0], [1, 0], [0, 1]]\n", "name = \"b\"\npolygon",
+               {"key 'rigid_body[0].name'", "duplicate body name"});
+}
+
+TEST(SceneValidation, UnknownLibrarySetListsTheAvailableOnes) {
+  expect_error(edit("elastic-unit", "ti64-johnson-1958"), "library",
+               {"key 'material[0].library'", "no material set \"ti64-johnson-1958\"", "available sets:",
+                "\"ti64-johnson-1985\"", "\"elastic-steel\""});
+}
+
+TEST(SceneValidation, RequiredKeysAndTables) {
+  const std::string no_end = edit("end_time = 1.0", "cfl = 0.5");
+  expect_error(no_end, "[solver]", {"table 'solver'", "missing required key 'end_time'"});
+  expect_error(edit("[solver]\nend_time = 1.0\n", ""), "title", {"top level", "missing required table [solver]"});
+  expect_error(edit("cell_size = 0.1\n", ""), "[grid]", {"table 'grid'", "missing required key 'cell_size'"});
+  expect_error(edit("name = \"b\"\n", ""), "[[body]]", {"table 'body[0]'", "missing required key 'name'"});
+}
+
+TEST(SceneValidation, NoBodies) {
+  const std::string text = kBase.substr(0, kBase.find("[[body]]"));
+  expect_error(text, "title", {"top level", "no [[body]] entries"});
+}
+
+TEST(SceneValidation, DegeneratePolygons) {
+  const std::string rect = "rectangle = { min = [0.2, 0.2], max = [0.4, 0.4] }";
+  expect_error(edit(rect, "polygon = [[0.1, 0.1], [0.5, 0.5], [0.9, 0.9]]"), "polygon",
+               {"key 'body[0].polygon'", "zero area"});
+  expect_error(edit(rect, "polygon = [[0.1, 0.1], [0.5, 0.5]]"), "polygon", {"at least 3 vertices, got 2"});
+  // A bow tie: edges 0-1 and 2-3 cross.
+  expect_error(edit(rect, "polygon = [[0.1, 0.1], [0.9, 0.9], [0.9, 0.1], [0.1, 0.9]]"), "polygon",
+               {"not simple", "edge 0-1 crosses edge 2-3"});
+  expect_error(edit(rect, "polygon = [[0.1, 0.1], [0.1, 0.1], [0.9, 0.1], [0.1, 0.9]]"), "polygon", {"repeats"});
+  expect_error(kBase + "[[rigid_body]]\nname = \"tool\"\npolygon = [[0, 0], [1, 1], [2, 2]]\n", "polygon = [[0, 0]",
+               {"key 'rigid_body[0].polygon'", "zero area"});
+}
+
+TEST(SceneValidation, TomlSyntaxErrorHasLineAndColumn) {
+  const std::string message = error_of(edit("cell_size = 0.1", "cell_size = = 0.1"));
+  EXPECT_TRUE(message.starts_with("case.toml:4:")) << message;
+  EXPECT_NE(message.find("TOML syntax error"), std::string::npos) << message;
+}
+
+TEST(SceneValidation, MissingFileNamesThePath) {
+  try {
+    load_scene("/nonexistent/dir/case.toml");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/dir/case.toml"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("no such file"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(load_scene(kCases), InputError);  // a directory
+}
+
+// --- overrides --------------------------------------------------------------------------------
+
+TEST(SceneOverrides, SetValuesOfEveryKind) {
+  const Scene s = parse_scene(kBase, "case.toml",
+                              {"solver.cfl=0.3", "body[0].velocity=[1.0, -2]", "solver.scheme=usl",
+                               "title=a bare string", "thermal.left=300", "output.vtu=false",
+                               "material[0].youngs_modulus=2e3", "body.0.particles_per_cell=4"});
+  EXPECT_DOUBLE_EQ(s.solver.cfl, 0.3);
+  EXPECT_EQ(s.bodies[0].velocity, Vec2(1.0, -2.0));
+  EXPECT_EQ(s.solver.scheme, TimeScheme::USL);
+  EXPECT_EQ(s.title, "a bare string");
+  ASSERT_TRUE(s.thermal.left.has_value());
+  EXPECT_DOUBLE_EQ(*s.thermal.left, 300.0);
+  EXPECT_FALSE(s.output.vtu);
+  EXPECT_DOUBLE_EQ(s.materials[0].youngs_modulus, 2000.0);
+  EXPECT_EQ(s.bodies[0].particles_per_cell, 4);
+}
+
+TEST(SceneOverrides, ReplaceAWholeShape) {
+  const Scene s = parse_scene(kBase, "case.toml", {"body[0].rectangle={min = [0.1, 0.1], max = [0.9, 0.5]}"});
+  EXPECT_EQ(s.bodies[0].shape.rectangle.max, Vec2(0.9, 0.5));
+}
+
+TEST(SceneOverrides, UnknownKeysAndBadValuesNameTheOverride) {
+  std::string m = error_of(kBase, {"solver.cfll=0.3"});
+  EXPECT_TRUE(m.starts_with("case.toml: --set 'solver.cfll=0.3': key 'solver.cfll': unknown key")) << m;
+  EXPECT_NE(m.find("did you mean 'cfl'?"), std::string::npos) << m;
+  m = error_of(kBase, {"thermall.left=300"});
+  EXPECT_TRUE(m.starts_with("case.toml: --set 'thermall.left=300': key 'thermall': unknown key")) << m;
+  m = error_of(kBase, {"solver.cfl=2"});
+  EXPECT_TRUE(m.starts_with("case.toml: --set 'solver.cfl=2': key 'solver.cfl': must be in (0, 1], got 2")) << m;
+  m = error_of(kBase, {"solver.scheme=usf"});
+  EXPECT_NE(m.find("--set 'solver.scheme=usf'"), std::string::npos) << m;
+  m = error_of(kBase, {"body[3].velocity=[0, 0]"});
+  EXPECT_NE(m.find("index 3 is out of range: 'body' has 1 entries"), std::string::npos) << m;
+  m = error_of(kBase, {"solver.cfl"});
+  EXPECT_NE(m.find("expected key=value"), std::string::npos) << m;
+  m = error_of(kBase, {"title.x=1"});
+  EXPECT_NE(m.find("'title' is not a table"), std::string::npos) << m;
+}
+
+// --- materials in scenes ----------------------------------------------------------------------
+
+TEST(SceneMaterials, LibrarySetWithPerKeyOverride) {
+  const Scene s = parse_scene(edit("library = \"elastic-unit\"", "library = \"ti64-lesuer-2000\"\njc_A = 1.0e9\ndamage = false"),
+                              "case.toml");
+  const MaterialParameters& m = s.materials.at(0);
+  const MaterialParameters& set = *builtin_material_library().find("ti64-lesuer-2000");
+  EXPECT_EQ(m.name, "m");
+  EXPECT_EQ(m.citation, set.citation);
+  EXPECT_DOUBLE_EQ(m.jc_A, 1.0e9);
+  EXPECT_FALSE(m.damage_enabled);
+  EXPECT_DOUBLE_EQ(m.jc_B, set.jc_B);
+  EXPECT_DOUBLE_EQ(m.fracture_energy, set.fracture_energy);
+  EXPECT_EQ(m.model, MaterialModel::JohnsonCook);
+}
+
+TEST(SceneMaterials, FractureToughnessBecomesFractureEnergy) {
+  // K_IC = 65 MPa sqrt(m), E = 113.8 GPa, nu = 0.342: G_f = K^2 (1 - nu^2) / E (algorithms.md §5.3).
+  const Scene s = parse_scene(
+      edit("library = \"elastic-unit\"", "library = \"ti64-johnson-1985\"\nfracture_toughness = 55.0e6"), "case.toml");
+  EXPECT_NEAR(s.materials[0].fracture_energy, 55e6 * 55e6 * (1 - 0.342 * 0.342) / 113.8e9, 1e-6);
+  EXPECT_NEAR(s.materials[0].fracture_energy, 23.5e3, 0.1e3);
+  expect_error(edit("library = \"elastic-unit\"",
+                    "library = \"ti64-johnson-1985\"\nfracture_energy = 1.0\nfracture_toughness = 55.0e6"),
+               "fracture_toughness", {"key 'material[0].fracture_toughness'", "not both"});
+  expect_error(edit("library = \"elastic-unit\"", "library = \"ti64-johnson-1985\"\nfracture_energy = 0"),
+               "fracture_energy", {"key 'material[0].fracture_energy'", "when damage = true"});
+}
+
+TEST(SceneMaterials, ConductionNeedsHeatCapacity) {
+  const std::string text = edit("library = \"elastic-unit\"",
+                                "density = 1.0\nyoungs_modulus = 1.0\npoisson_ratio = 0.0\nspecific_heat = 0.0");
+  expect_error(edit("[solver]", "[thermal]\nconduction = true\n[solver]", text), "specific_heat",
+               {"key 'material[0].specific_heat'", "thermal.conduction"});
+}
+
+// --- shapes -----------------------------------------------------------------------------------
+
+TEST(SceneShapes, ContainTheRightPoints) {
+  const std::string text = kBase +
+                           "[[body]]\nname = \"d\"\nmaterial = \"m\"\ndisk = { center = [0.7, 0.7], radius = 0.1 }\n"
+                           "[[body]]\nname = \"L\"\nmaterial = \"m\"\n"
+                           "polygon = [[0.5, 0.0], [1.0, 0.0], [1.0, 0.2], [0.7, 0.2], [0.7, 0.5], [0.5, 0.5], [0.5, 0.0]]\n";
+  const Scene s = parse_scene(text, "case.toml");
+  const Shape& rect = s.bodies[0].shape;
+  EXPECT_TRUE(rect.contains({0.3, 0.3}));
+  EXPECT_FALSE(rect.contains({0.5, 0.3}));
+  const Shape& disk = s.bodies[1].shape;
+  EXPECT_TRUE(disk.contains({0.75, 0.75}));
+  EXPECT_FALSE(disk.contains({0.79, 0.79}));  // inside the bounding box, outside the circle
+  const Shape& ell = s.bodies[2].shape;
+  EXPECT_EQ(ell.polygon.vertices.size(), 6u);  // the repeated closing vertex is dropped
+  EXPECT_TRUE(ell.contains({0.6, 0.4}));
+  EXPECT_TRUE(ell.contains({0.9, 0.1}));
+  EXPECT_FALSE(ell.contains({0.9, 0.4}));  // in the notch of the L
+  EXPECT_FALSE(ell.contains({0.4, 0.1}));
+}
+
+// --- writer -----------------------------------------------------------------------------------
+
+Scene round_trip(const Scene& s) {
+  std::ostringstream out;
+  write_scene(s, out);
+  Scene back = parse_scene(out.str(), s.source_file);
+  return back;
+}
+
+TEST(SceneWriter, RoundTripsEveryShippedCase) {
+  for (const auto& entry : std::filesystem::directory_iterator(kCases)) {
+    if (entry.path().extension() != ".toml") continue;
+    SCOPED_TRACE(entry.path().string());
+    const Scene s = load_scene(entry.path());
+    expect_same_scene(round_trip(s), s);
+  }
+}
+
+TEST(SceneWriter, RoundTripsEveryField) {
+  const std::string text = kBase + R"(
+[[material]]
+name = "ti"
+library = "ti64-seo-2005"
+eos = "mie_gruneisen"
+damage_evolution = "exponential"
+strain_rate_smoothing_time = 1.0e-7
+citation = "quote \" and backslash \\ here"
+
+[[body]]
+name = "tri"
+material = "ti"
+polygon = [[0.5, 0.5], [0.9, 0.5], [0.7, 0.9]]
+particles_per_cell = 3
+velocity = [0.1, -0.3]
+temperature = 500.0
+
+[[rigid_body]]
+name = "tool"
+polygon = [[1.0, 0.0], [2.0, 0.0], [2.0, 1.0]]
+velocity = [-1.0, 0.0]
+friction = 0.35
+rounding_radius = 0.05
+)";
+  const Scene s = parse_scene(text, "case.toml",
+                              {"thermal.conduction=true", "thermal.top=300.5", "thermal.left=1.0e-3",
+                               "boundaries.bottom=roller", "boundaries.left=fixed", "solver.shape_function=linear",
+                               "solver.scheme=usl", "solver.max_steps=123", "solver.fixed_time_step=1.0e-9",
+                               "solver.flip_fraction=0.95", "solver.remove_escaping_particles=true", "output.snapshot_interval=0.1", "output.vtu=false",
+                               "body_force=[0.1, -9.81]", "title=\"round trip\""});
+  ASSERT_EQ(s.rigid_bodies.size(), 1u);
+  EXPECT_DOUBLE_EQ(s.rigid_bodies[0].rounding_radius, 0.05);
+  EXPECT_TRUE(s.solver.remove_escaping_particles);
+  ASSERT_TRUE(s.thermal.top.has_value());
+  EXPECT_FALSE(s.thermal.bottom.has_value());
+  const Scene back = round_trip(s);
+  EXPECT_EQ(back.materials, s.materials);
+  EXPECT_EQ(back.bodies, s.bodies);
+  EXPECT_EQ(back.rigid_bodies, s.rigid_bodies);
+  EXPECT_EQ(back.thermal, s.thermal);
+  EXPECT_EQ(back.solver, s.solver);
+  expect_same_scene(back, s);
+}
+
+}  // namespace
+}  // namespace mpmcut
