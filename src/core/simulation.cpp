@@ -32,6 +32,12 @@ Simulation::Simulation(const Scene& scene) : scene_(scene) {
     rigid_.push_back(st);
   }
   for (const auto& r : scene_.rigid_bodies) has_friction_ = has_friction_ || r.friction > 0.0;
+  conduction_limit_ = std::numeric_limits<double>::infinity();
+  for (const auto& m : scene_.materials) {
+    if (m.thermal_conductivity <= 0.0 || m.specific_heat <= 0.0) continue;
+    const double alpha = m.thermal_conductivity / (m.density * m.specific_heat);
+    conduction_limit_ = std::min(conduction_limit_, scene_.solver.cfl * grid_.h * grid_.h / (4.0 * alpha));
+  }
   double max_density = 0.0;
   for (const auto& m : scene_.materials) max_density = std::max(max_density, m.density);
   // MPM3D's cut-off (1e-5 rho h^3 in 3D), per unit thickness here.
@@ -114,9 +120,15 @@ void Simulation::sort_particles_by_cell() {
 void Simulation::step(double max_dt) {
   const double dt = std::min(stable_time_step(), max_dt);
   if (step_ % 20 == 0) sort_particles_by_cell();
+  // Conduction is sub-cycled: its explicit limit h^2/(4 alpha) is thousands of mechanical steps
+  // for metals, so it runs once per conduction_substeps_ steps over the time they covered.
+  conduct_now_ = scene_.thermal.conduction &&
+                 (++steps_since_conduction_ >= conduction_substeps_ || conduction_elapsed_ + 2 * dt > conduction_limit_);
   particles_to_grid();
   apply_grid_boundary_conditions(true);
   for (auto& r : rigid_) r.step_impulse = Vec2::Zero();
+  friction_box_lo_ = Vec2::Constant(std::numeric_limits<double>::max());
+  friction_box_hi_ = Vec2::Constant(-std::numeric_limits<double>::max());
   apply_rigid_contact(grid_.velocity, dt, ContactPass::AfterP2G);
   update_grid_momentum(dt);
   apply_rigid_contact(grid_.velocity_new, dt, ContactPass::AfterUpdate);
@@ -124,7 +136,14 @@ void Simulation::step(double max_dt) {
   if (scene_.solver.scheme == TimeScheme::MUSL) remap_momentum_musl();
   update_particle_stress(dt);
   if (has_friction_) deposit_frictional_heat();
-  if (scene_.thermal.conduction) conduct_heat(dt);
+  if (scene_.thermal.conduction) {
+    conduction_elapsed_ += dt;
+    if (conduct_now_) {
+      conduct_heat(conduction_elapsed_);
+      conduction_elapsed_ = 0.0;
+      steps_since_conduction_ = 0;
+    }
+  }
   std::swap(particles_.position, position_new_);
   for (std::size_t r = 0; r < rigid_.size(); ++r) rigid_[r].displacement += dt * rigid_[r].velocity;
   dt_ = dt;
@@ -140,10 +159,14 @@ void Simulation::deposit_frictional_heat() {
   Particles& P = particles_;
   const Grid& G = grid_;
   const std::size_t n = P.size();
+  if (friction_box_lo_.x() > friction_box_hi_.x()) return;  // no frictional heat this step
+  // Only particles whose stencil can reach a heated node (2 cells around the heated box).
+  const Vec2 lo = friction_box_lo_ - Vec2::Constant(2.0), hi = friction_box_hi_ + Vec2::Constant(2.0);
 #pragma omp parallel for schedule(static)
   for (std::size_t p = 0; p < n; ++p) {
-    Stencil st;
     const Vec2 u = cell_units(P.position[p]);
+    if (u.x() < lo.x() || u.x() > hi.x() || u.y() < lo.y() || u.y() > hi.y()) continue;
+    Stencil st;
     shape_of(p).evaluate(u.x(), u.y(), st);
     double dT = 0.0;
     for (int a = 0; a < 3; ++a)
@@ -185,14 +208,8 @@ double Simulation::stable_time_step() const {
   }
   for (const auto& r : rigid_) v_max = std::max(v_max, r.velocity.norm());
   double dt = scene_.solver.cfl * grid_.h / (c_max + v_max);
-  if (scene_.thermal.conduction) {
-    // Explicit conduction: dt <= h^2/(4 alpha) in 2D, with the same CFL safety factor.
-    for (const auto& m : scene_.materials) {
-      if (m.thermal_conductivity <= 0.0 || m.specific_heat <= 0.0) continue;
-      const double alpha = m.thermal_conductivity / (m.density * m.specific_heat);
-      dt = std::min(dt, scene_.solver.cfl * grid_.h * grid_.h / (4.0 * alpha));
-    }
-  }
+  // Explicit conduction: dt <= h^2/(4 alpha) in 2D, with the same CFL safety factor.
+  if (scene_.thermal.conduction) dt = std::min(dt, conduction_limit_);
   return dt;
 }
 
@@ -246,7 +263,7 @@ double Simulation::deterministic_sum(std::size_t n, F&& f) const {
 void Simulation::particles_to_grid() {
   grid_.reset();
   bucket_particles_by_strip();
-  const bool thermal = scene_.thermal.conduction;
+  const bool thermal = conduct_now_;
   const bool heat_capacity = thermal || has_friction_;
   const bool has_rigid = !rigid_.empty();  // the position check needs sum S m x
   const Vec2 b = scene_.body_force;
@@ -385,6 +402,10 @@ void Simulation::apply_rigid_contact(std::vector<Vec2>& v, double dt, ContactPas
           const double q = 0.5 * m * (vt.squaredNorm() - new_rel.squaredNorm());
           friction_work += q;
           G.friction_heat[n] += q;
+          if (q > 0.0) {
+            friction_box_lo_ = friction_box_lo_.cwiseMin(Vec2(i, j));
+            friction_box_hi_ = friction_box_hi_.cwiseMax(Vec2(i, j));
+          }
         }
       }
     }
@@ -407,8 +428,11 @@ void Simulation::grid_to_particles(double dt) {
   position_new_.resize(n);
   const double flip = scene_.solver.flip_fraction;
   const Vec2 b = scene_.body_force;
-  double body_force_work = 0.0;
-#pragma omp parallel for schedule(static) reduction(+ : body_force_work)
+  // Work of the body force, sum m_p b.(v_old + v_new)/2 dt = b.(P_old + P_new)/2 dt, from the
+  // total momenta (fixed-chunk sums): an OpenMP reduction would make it vary from run to run.
+  const bool body_force = b.x() != 0.0 || b.y() != 0.0;
+  const Vec2 momentum_old = body_force ? total_momentum() : Vec2::Zero();
+#pragma omp parallel for schedule(static)
   for (std::size_t p = 0; p < n; ++p) {
     Stencil st;
     const Vec2 u = cell_units(P.position[p]);
@@ -428,9 +452,8 @@ void Simulation::grid_to_particles(double dt) {
     const Vec2 v_old = P.velocity[p];
     P.velocity[p] = flip * (v_old + dv) + (1.0 - flip) * v_pic;
     position_new_[p] = P.position[p] + dt * v_pic;
-    body_force_work += P.mass[p] * b.dot(0.5 * (v_old + P.velocity[p])) * dt;
   }
-  energy_.external_work += body_force_work;
+  if (body_force) energy_.external_work += b.dot(0.5 * (momentum_old + total_momentum())) * dt;
 }
 
 // MUSL: the updated particle momenta are mapped back to the grid (same weights as this step's
@@ -494,26 +517,18 @@ void Simulation::conduct_heat(double dt) {
   Particles& P = particles_;
   Grid& G = grid_;
   const std::size_t n = P.size();
-  std::vector<Vec2> grad_T(n);
-#pragma omp parallel for schedule(static)
-  for (std::size_t p = 0; p < n; ++p) {
-    Stencil st;
-    const Vec2 u = cell_units(P.position[p]);
-    shape_of(p).evaluate(u.x(), u.y(), st);
-    Vec2 g = Vec2::Zero();
-    for (int a = 0; a < 3; ++a)
-      for (int c = 0; c < 3; ++c) {
-        const int node = G.index(st.i0 + a, st.j0 + c);
-        g += G.temperature[node] * Vec2(st.dwdx[a][c], st.dwdy[a][c]);
-      }
-    grad_T[p] = g;
-  }
+  // Particle temperature gradient from the nodal temperatures, and its conductive flux
+  // scattered back (the nodal temperatures are only read here, the heat rates only written).
   for_each_particle_coloured([&](std::size_t p) {
     Stencil st;
     const Vec2 u = cell_units(P.position[p]);
     shape_of(p).evaluate(u.x(), u.y(), st);
+    Vec2 grad_T = Vec2::Zero();
+    for (int a = 0; a < 3; ++a)
+      for (int c = 0; c < 3; ++c)
+        grad_T += G.temperature[G.index(st.i0 + a, st.j0 + c)] * Vec2(st.dwdx[a][c], st.dwdy[a][c]);
     const double k = scene_.materials[P.material[p]].thermal_conductivity;
-    const Vec2 flux = -k * grad_T[p];  // W/m^2
+    const Vec2 flux = -k * grad_T;  // W/m^2
     for (int a = 0; a < 3; ++a)
       for (int c = 0; c < 3; ++c)
         G.heat_rate[G.index(st.i0 + a, st.j0 + c)] += P.volume[p] * flux.dot(Vec2(st.dwdx[a][c], st.dwdy[a][c]));

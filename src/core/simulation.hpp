@@ -75,6 +75,9 @@ class Simulation {
   long removed_particles() const { return removed_particles_; }
   double removed_mass() const { return removed_mass_; }
   void set_removed(long count, double mass) { removed_particles_ = count; removed_mass_ = mass; }  // restarts only
+  // Conduction sub-cycle state: seconds since the last conduction update and steps since.
+  std::pair<double, int> conduction_state() const { return {conduction_elapsed_, steps_since_conduction_}; }
+  void set_conduction_state(double elapsed, int steps) { conduction_elapsed_ = elapsed; steps_since_conduction_ = steps; }  // restarts only
   // Recomputes kinetic and elastic energy from the particles (dissipation terms are kept).
   void refresh_energy();
 
@@ -109,6 +112,13 @@ class Simulation {
   std::vector<RigidPolygon> rigid_geometry_;  // outlines at t = 0; current = outline + displacement
   double node_mass_cutoff_ = 0.0;             // nodes lighter than this count as empty, kg/m
   bool has_friction_ = false;                 // some rigid body has mu > 0: frictional heating
+  // Conduction sub-cycling (restart state: conduction_elapsed_, steps_since_conduction_)
+  static constexpr int conduction_substeps_ = 16;
+  double conduction_limit_ = 0.0;   // explicit conduction step limit, s
+  double conduction_elapsed_ = 0.0; // mechanical time since the last conduction update, s
+  int steps_since_conduction_ = 0;
+  bool conduct_now_ = false;        // this step updates conduction (P2G maps temperatures)
+  Vec2 friction_box_lo_, friction_box_hi_;  // node index box with frictional heat this step
   long removed_particles_ = 0;                // left the domain (remove_escaping_particles)
   double removed_mass_ = 0.0;                 // kg/m
   // Scratch, reused every step

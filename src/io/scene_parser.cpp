@@ -1,5 +1,8 @@
 #include "io/scene_parser.hpp"
 
+#include "cutting/cutting_scene.hpp"
+#include "io/cutting_input.hpp"
+
 #include <cctype>
 #include <cmath>
 #include <fstream>
@@ -215,8 +218,8 @@ BoundarySpec read_boundaries(std::optional<TableReader> t) {
   return b;
 }
 
-SolverSpec read_solver(TableReader t) {
-  SolverSpec s;
+// `base`: the values a key takes when absent; end_time is required unless the base has one.
+SolverSpec read_solver(TableReader t, SolverSpec s = {}) {
   s.shape_function = t.choice<ShapeFunctionKind>(
       "shape_function", {{"ugimp", ShapeFunctionKind::UGimp}, {"linear", ShapeFunctionKind::Linear}}, s.shape_function);
   s.scheme = t.choice<TimeScheme>("scheme", {{"musl", TimeScheme::MUSL}, {"usl", TimeScheme::USL}}, s.scheme);
@@ -224,7 +227,7 @@ SolverSpec read_solver(TableReader t) {
   t.check("cfl", s.cfl > 0.0 && s.cfl <= 1.0, "in (0, 1]", s.cfl);
   s.flip_fraction = t.number("flip_fraction", s.flip_fraction);
   t.check("flip_fraction", s.flip_fraction >= 0.0 && s.flip_fraction <= 1.0, "in [0, 1]", s.flip_fraction);
-  t.require_key("end_time", "simulated time, s");
+  if (s.end_time <= 0.0) t.require_key("end_time", "simulated time, s");
   s.end_time = t.number("end_time", s.end_time);
   t.check("end_time", s.end_time > 0.0, "a positive time (s)", s.end_time);
   s.max_steps = t.integer("max_steps", s.max_steps);
@@ -238,8 +241,7 @@ SolverSpec read_solver(TableReader t) {
   return s;
 }
 
-OutputSpec read_output(std::optional<TableReader> t) {
-  OutputSpec o;
+OutputSpec read_output(std::optional<TableReader> t, OutputSpec o = {}) {
   if (!t) return o;
   o.snapshot_interval = t->number("snapshot_interval", o.snapshot_interval);
   t->check("snapshot_interval", o.snapshot_interval >= 0.0, ">= 0 (s; 0 = first and last only)", o.snapshot_interval);
@@ -349,8 +351,51 @@ RigidBodySpec read_rigid_body(TableReader t) {
   return r;
 }
 
+// The workpiece material of a [cutting] case: a [[material]] of the file, else a library set.
+MaterialParameters cutting_material(TableReader& top, TableReader& cutting, const std::string& name) {
+  const MaterialLibrary& library = builtin_material_library();
+  std::optional<MaterialParameters> found;
+  for (TableReader& t : top.array_of_tables("material")) {
+    MaterialParameters m = read_material(t, library);
+    if (m.name == name) found = m;
+  }
+  if (found) return *found;
+  if (const MaterialParameters* m = library.find(name)) return *m;
+  std::string known;
+  for (const auto& n : library.names()) known += (known.empty() ? "" : ", ") + ("\"" + n + "\"");
+  cutting.fail("material", fmt::format("no [[material]] and no library set named \"{}\"; library sets: {}", name, known));
+}
+
+// A [cutting] case: the preset builds grid, workpiece, tool, boundaries and outputs from the
+// process parameters; [solver] and [output] may still adjust the numerics.
+Scene read_cutting_case(TableReader& top) {
+  for (const char* key : {"grid", "body", "rigid_body", "boundaries", "thermal", "body_force", "cutting_process"})
+    if (top.has(key))
+      top.fail(key, "not allowed in a [cutting] case, which builds its own grid, bodies, tool and boundaries; "
+                    "to edit those, run the case once and edit the expanded scene.toml in its result directory");
+  TableReader cutting = top.table("cutting");
+  const CuttingParameters params = read_cutting_parameters(cutting);
+  const MaterialParameters material = cutting_material(top, cutting, params.material);
+  Scene scene;
+  try {
+    scene = build_cutting_scene(params, material);
+  } catch (const std::invalid_argument& e) {
+    cutting.fail_table(e.what());
+  }
+  scene.title = top.string("title", scene.title);
+  if (auto t = top.optional_table("solver")) scene.solver = read_solver(*t, scene.solver);
+  scene.output = read_output(top.optional_table("output"), scene.output);
+  top.reject_unknown_keys();
+  return scene;
+}
+
 Scene read_scene(const toml::table& root, const std::shared_ptr<const InputSource>& source) {
   TableReader top(root, "", source);
+  if (top.has("cutting")) {
+    Scene scene = read_cutting_case(top);
+    scene.source_file = source->name;
+    return scene;
+  }
   Scene scene;
   scene.source_file = source->name;
   scene.title = top.string("title", "");
@@ -390,6 +435,11 @@ Scene read_scene(const toml::table& root, const std::shared_ptr<const InputSourc
   for (TableReader& t : top.array_of_tables("rigid_body")) {
     scene.rigid_bodies.push_back(read_rigid_body(t));
     claim_name(t, scene.rigid_bodies.back().name);
+  }
+  // An expanded cutting scene remembers its process, so that its force outputs are written.
+  if (auto t = top.optional_table("cutting_process")) {
+    scene.cutting = read_cutting_parameters(*t);
+    if (scene.rigid_bodies.empty()) t->fail_table("[cutting_process] needs the tool as the first [[rigid_body]]");
   }
   top.reject_unknown_keys();
   return scene;

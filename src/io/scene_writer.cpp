@@ -1,5 +1,7 @@
 #include "io/scene_writer.hpp"
 
+#include "io/cutting_input.hpp"
+
 #include <fmt/format.h>
 
 namespace mpmcut {
@@ -160,6 +162,11 @@ void write_scene(const Scene& s, std::ostream& out) {
     out << "rounding_radius = " << num(r.rounding_radius) << "\n";
     out << "velocity = " << vec(r.velocity) << "\n";
     out << "friction = " << num(r.friction) << "\n";
+  }
+  if (s.cutting) {
+    out << "\n# The process this scene was built from (the tool is the first rigid body); it makes the run\n"
+           "# write forces.csv and the cutting results. Edit the scene above, not this record.";
+    write_cutting_parameters(*s.cutting, out, "cutting_process");
   }
 }
 

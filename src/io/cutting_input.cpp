@@ -1,0 +1,97 @@
+#include "io/cutting_input.hpp"
+
+#include <fmt/format.h>
+
+namespace mpmcut {
+
+CuttingParameters read_cutting_parameters(TableReader& t) {
+  CuttingParameters c;
+  t.require_key("material", "the workpiece material: a [[material]] name or a library set, e.g. \"ti64-johnson-1985\"");
+  c.material = t.string("material", "");
+  // Speed in SI, or in the machinist's m/min when the key says so; not both.
+  const bool si = t.has("cutting_speed"), per_min = t.has("cutting_speed_m_per_min");
+  if (si && per_min) t.fail("cutting_speed_m_per_min", "give either cutting_speed (m/s) or cutting_speed_m_per_min, not both");
+  if (!si && !per_min) t.require_key("cutting_speed", "cutting speed V, m/s (or cutting_speed_m_per_min)");
+  if (si) {
+    c.cutting_speed = t.number("cutting_speed", 0.0);
+    t.check("cutting_speed", c.cutting_speed > 0.0 && c.cutting_speed <= 1000.0, "in (0, 1000] m/s", c.cutting_speed);
+  } else {
+    const double v = t.number("cutting_speed_m_per_min", 0.0);
+    t.check("cutting_speed_m_per_min", v > 0.0 && v <= 60000.0, "in (0, 60000] m/min", v);
+    c.cutting_speed = v / 60.0;
+  }
+  t.require_key("uncut_chip_thickness", "uncut chip thickness (feed) t0, m");
+  c.uncut_chip_thickness = t.number("uncut_chip_thickness", 0.0);
+  t.check("uncut_chip_thickness", c.uncut_chip_thickness > 0.0 && c.uncut_chip_thickness < 0.1,
+          "a positive length below 0.1 m (e.g. 0.1e-3 for 0.1 mm)", c.uncut_chip_thickness);
+  t.require_key("cut_length", "tool travel, m");
+  c.cut_length = t.number("cut_length", 0.0);
+  t.check("cut_length", c.cut_length > 0.0, "a positive length (m)", c.cut_length);
+  c.width_of_cut = t.number("width_of_cut", c.width_of_cut);
+  t.check("width_of_cut", c.width_of_cut > 0.0, "a positive length (m)", c.width_of_cut);
+  c.workpiece_length = t.number("workpiece_length", c.workpiece_length);
+  t.check("workpiece_length", c.workpiece_length >= 0.0, ">= 0 (m; 0 = automatic)", c.workpiece_length);
+  c.workpiece_height = t.number("workpiece_height", c.workpiece_height);
+  t.check("workpiece_height", c.workpiece_height >= 0.0, ">= 0 (m; 0 = automatic)", c.workpiece_height);
+  c.rake_angle_deg = t.number("rake_angle_deg", c.rake_angle_deg);
+  t.check("rake_angle_deg", c.rake_angle_deg > -45.0 && c.rake_angle_deg < 45.0, "in (-45, 45) degrees", c.rake_angle_deg);
+  c.clearance_angle_deg = t.number("clearance_angle_deg", c.clearance_angle_deg);
+  t.check("clearance_angle_deg", c.clearance_angle_deg > 0.0 && c.clearance_angle_deg < 45.0, "in (0, 45) degrees",
+          c.clearance_angle_deg);
+  t.check("rake_angle_deg", c.rake_angle_deg + c.clearance_angle_deg < 80.0,
+          "such that rake + clearance < 80 degrees (the tool wedge needs a positive angle)", c.rake_angle_deg);
+  c.edge_radius = t.number("edge_radius", c.edge_radius);
+  t.check("edge_radius", c.edge_radius >= 0.0 && c.edge_radius < c.uncut_chip_thickness * 10.0,
+          "a length >= 0 m and below 10 uncut chip thicknesses", c.edge_radius);
+  c.tool_length = t.number("tool_length", c.tool_length);
+  t.check("tool_length", c.tool_length >= 0.0, ">= 0 (m; 0 = automatic)", c.tool_length);
+  c.tool_height = t.number("tool_height", c.tool_height);
+  t.check("tool_height", c.tool_height >= 0.0, ">= 0 (m; 0 = automatic)", c.tool_height);
+  c.friction = t.number("friction", c.friction);
+  t.check("friction", c.friction >= 0.0 && c.friction <= 2.0, "a Coulomb coefficient in [0, 2]", c.friction);
+  c.initial_temperature = t.number("initial_temperature", c.initial_temperature);
+  t.check("initial_temperature", c.initial_temperature > 0.0, "a positive temperature (K)", c.initial_temperature);
+  c.cell_size = t.number("cell_size", c.cell_size);
+  t.check("cell_size", c.cell_size >= 0.0 && c.cell_size <= 0.5 * c.uncut_chip_thickness,
+          "a length in [0, uncut_chip_thickness/2] (m; 0 = t0/10)", c.cell_size);
+  c.particles_per_cell = static_cast<int>(t.integer("particles_per_cell", c.particles_per_cell));
+  t.check("particles_per_cell", c.particles_per_cell >= 1 && c.particles_per_cell <= 4, "an integer from 1 to 4",
+          c.particles_per_cell);
+  c.conduction = t.boolean("conduction", c.conduction);
+  c.chip_room = t.number("chip_room", c.chip_room);
+  t.check("chip_room", c.chip_room >= 0.0, ">= 0 (m; 0 = automatic)", c.chip_room);
+  c.snapshots = static_cast<int>(t.integer("snapshots", c.snapshots));
+  t.check("snapshots", c.snapshots >= 1 && c.snapshots <= 10000, "an integer from 1 to 10000", c.snapshots);
+  c.steady_start_fraction = t.number("steady_start_fraction", c.steady_start_fraction);
+  t.check("steady_start_fraction", c.steady_start_fraction >= 0.0 && c.steady_start_fraction < 1.0, "in [0, 1)",
+          c.steady_start_fraction);
+  t.reject_unknown_keys();
+  return c;
+}
+
+void write_cutting_parameters(const CuttingParameters& c, std::ostream& out, std::string_view table_name) {
+  const auto num = [](double x) { return fmt::format("{}", x); };
+  out << "\n[" << table_name << "]\n";
+  out << "material = \"" << c.material << "\"\n";
+  out << "cutting_speed = " << num(c.cutting_speed) << "  # m/s\n";
+  out << "uncut_chip_thickness = " << num(c.uncut_chip_thickness) << "  # m\n";
+  out << "width_of_cut = " << num(c.width_of_cut) << "  # m\n";
+  out << "cut_length = " << num(c.cut_length) << "  # m\n";
+  out << "workpiece_length = " << num(c.workpiece_length) << "  # m (0 = automatic)\n";
+  out << "workpiece_height = " << num(c.workpiece_height) << "  # m (0 = automatic)\n";
+  out << "rake_angle_deg = " << num(c.rake_angle_deg) << "\n";
+  out << "clearance_angle_deg = " << num(c.clearance_angle_deg) << "\n";
+  out << "edge_radius = " << num(c.edge_radius) << "  # m\n";
+  out << "tool_length = " << num(c.tool_length) << "  # m (0 = automatic)\n";
+  out << "tool_height = " << num(c.tool_height) << "  # m (0 = automatic)\n";
+  out << "friction = " << num(c.friction) << "\n";
+  out << "initial_temperature = " << num(c.initial_temperature) << "  # K\n";
+  out << "cell_size = " << num(c.cell_size) << "  # m (0 = t0/10)\n";
+  out << "particles_per_cell = " << c.particles_per_cell << "\n";
+  out << "conduction = " << (c.conduction ? "true" : "false") << "\n";
+  out << "chip_room = " << num(c.chip_room) << "  # m (0 = automatic)\n";
+  out << "snapshots = " << c.snapshots << "\n";
+  out << "steady_start_fraction = " << num(c.steady_start_fraction) << "\n";
+}
+
+}  // namespace mpmcut
