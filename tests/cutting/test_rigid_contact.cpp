@@ -131,3 +131,32 @@ TEST(RigidContact, PushingConservesMomentumAndEnergy) {
   EXPECT_GT(p.x(), 0.0);
   EXPECT_NEAR(sim.energy().external_work, stored, 0.05 * stored);
 }
+
+// A block sliding at 2 m/s on a rough plane stops by friction: the frictional work (Coulomb
+// force x slip) accounts for the kinetic energy it loses, and its deceleration is mu g.
+TEST(RigidContact, FrictionalWorkEqualsKineticEnergyLost) {
+  const double h = 0.02, g = 10.0, mu = 0.3, v0 = 2.0;
+  Scene s;
+  s.grid = {h, Vec2(0, 0), Vec2(2.0, 0.4)};
+  s.solver.cfl = 0.4;
+  s.body_force = Vec2(0.0, -g);
+  s.materials.push_back(elastic_material("rubber", 1e6, 0.3, 1000.0));
+  s.bodies.push_back(rectangle_body("block", "rubber", Vec2(0.1, 0.1), Vec2(0.3, 0.2), 2, Vec2(v0, 0)));
+  RigidBodySpec plane;
+  plane.name = "plane";
+  plane.polygon = box(Vec2(-0.1, -0.1), Vec2(2.1, 0.1));
+  plane.friction = mu;
+  s.rigid_bodies.push_back(plane);
+  Simulation sim(s);
+  sim.refresh_energy();
+  const double E0 = sim.energy().kinetic;
+  double M = 0.0;
+  for (double m : sim.particles().mass) M += m;
+  while (sim.time() < 0.4) sim.step();  // stops at v0/(mu g) = 0.67 s
+  sim.refresh_energy();
+  const EnergyTotals& e = sim.energy();
+  const double lost = E0 - e.kinetic;
+  EXPECT_NEAR(e.friction + e.elastic - e.external_work, lost, 0.01 * lost);
+  EXPECT_NEAR(sim.total_momentum().x() / M, v0 - mu * g * sim.time(), 0.02 * v0);
+  EXPECT_NEAR(e.heat, e.friction, 1e-12 * e.friction);  // frictional work becomes heat
+}
