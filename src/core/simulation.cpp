@@ -133,6 +133,7 @@ void Simulation::step(double max_dt) {
   update_grid_momentum(dt);
   apply_rigid_contact(grid_.velocity_new, dt, ContactPass::AfterUpdate);
   grid_to_particles(dt);
+  if (!rigid_.empty()) push_particles_out_of_rigid_bodies(dt);
   if (scene_.solver.scheme == TimeScheme::MUSL) remap_momentum_musl();
   update_particle_stress(dt);
   if (has_friction_) deposit_frictional_heat();
@@ -151,6 +152,56 @@ void Simulation::step(double max_dt) {
   ++step_;
   if (scene_.solver.remove_escaping_particles) remove_escaped_particles();
   check_guards();
+}
+
+// Safeguard behind the grid contact: a particle whose new position lies inside a rigid body
+// (possible at a sharp edge, where neighbouring nodes have different normals) is moved back to
+// the surface and its approach velocity removed. The momentum this takes counts as contact
+// impulse on the rigid body, like the grid corrections.
+void Simulation::push_particles_out_of_rigid_bodies(double dt) {
+  Particles& P = particles_;
+  const std::size_t n = P.size();
+  for (std::size_t r = 0; r < rigid_.size(); ++r) {
+    const RigidPolygon& geom = rigid_geometry_[r];
+    const Vec2 shift = rigid_[r].displacement + dt * rigid_[r].velocity;  // where it is at the end of the step
+    const Vec2 lo = geom.lower() + shift, hi = geom.upper() + shift;
+    const Vec2 vr = rigid_[r].velocity;
+    std::vector<std::size_t> inside;
+#pragma omp parallel
+    {
+      std::vector<std::size_t> mine;
+#pragma omp for schedule(static) nowait
+      for (std::size_t p = 0; p < n; ++p) {
+        const Vec2 x = position_new_[p];
+        if (x.x() < lo.x() || x.x() > hi.x() || x.y() < lo.y() || x.y() > hi.y()) continue;
+        Vec2 normal;
+        if (geom.signed_distance(x - shift, normal) < 0.0) mine.push_back(p);
+      }
+#pragma omp critical
+      inside.insert(inside.end(), mine.begin(), mine.end());
+    }
+    std::sort(inside.begin(), inside.end());  // fixed order: deterministic sums
+    Vec2 impulse = Vec2::Zero();
+    double work = 0.0;
+    for (std::size_t p : inside) {
+      Vec2 normal;
+      const double d = geom.signed_distance(position_new_[p] - shift, normal);
+      position_new_[p] -= (d - 1e-9 * grid_.h) * normal;  // onto the surface, a hair outside
+      const double vn = (P.velocity[p] - vr).dot(normal);
+      if (vn < 0.0) {
+        const Vec2 dp = -P.mass[p] * vn * normal;
+        P.velocity[p] -= vn * normal;
+        impulse += dp;
+        work += dp.dot(vr);
+      }
+      ++pushed_out_particles_;
+    }
+    rigid_[r].step_impulse -= impulse;
+    rigid_[r].force = rigid_[r].step_impulse / dt;
+    rigid_[r].impulse -= impulse;
+    rigid_[r].work += work;
+    energy_.external_work += work;
+  }
 }
 
 // Frictional work found at contact nodes heats the particles there: node i's heat q_i goes to

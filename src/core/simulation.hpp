@@ -73,6 +73,7 @@ class Simulation {
   Vec2 total_momentum() const;  // kg m/s per m
   double max_temperature() const;
   long removed_particles() const { return removed_particles_; }
+  long pushed_out_particles() const { return pushed_out_particles_; }  // diagnostics (not restart state)
   double removed_mass() const { return removed_mass_; }
   void set_removed(long count, double mass) { removed_particles_ = count; removed_mass_ = mass; }  // restarts only
   // Conduction sub-cycle state: seconds since the last conduction update and steps since.
@@ -94,6 +95,7 @@ class Simulation {
   void conduct_heat(double dt);
   void deposit_frictional_heat();
   void remove_escaped_particles();
+  void push_particles_out_of_rigid_bodies(double dt);
   void check_guards() const;
   void sort_particles_by_cell();
 
@@ -119,6 +121,7 @@ class Simulation {
   int steps_since_conduction_ = 0;
   bool conduct_now_ = false;        // this step updates conduction (P2G maps temperatures)
   Vec2 friction_box_lo_, friction_box_hi_;  // node index box with frictional heat this step
+  long pushed_out_particles_ = 0;             // particle corrections by the rigid-body safeguard
   long removed_particles_ = 0;                // left the domain (remove_escaping_particles)
   double removed_mass_ = 0.0;                 // kg/m
   // Scratch, reused every step

@@ -25,7 +25,7 @@ struct CuttingParameters {
   bool conduction = true;            // heat conduction in the workpiece
   double chip_room = 0.0;            // free space above the workpiece for the chip, m; 0 = automatic
   int snapshots = 20;                // VTU snapshots over the cut
-  double steady_start_fraction = 0.4;// steady window starts after this fraction of the cut (and >= 3 t0 of travel)
+  double steady_start_fraction = 0.4;// steady window starts after this fraction of the cut (and after min(3 t0, 0.6 cut))
 
   bool operator==(const CuttingParameters&) const = default;
 };

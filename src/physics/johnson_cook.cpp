@@ -1,11 +1,219 @@
 #include "physics/johnson_cook.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace mpmcut {
 
-ConstitutiveIncrement JohnsonCookMaterial::update(Particles&, std::size_t, const Mat2&, const StepContext&) const {
-  throw std::logic_error("Johnson-Cook material not implemented yet");
+namespace {
+constexpr double kReturnTolerance = 1e-12;  // |r| <= tol * q_trial
+constexpr int kMaxReturnIterations = 200;   // bisection alone needs ~60 to reach double precision
+}  // namespace
+
+JohnsonCookMaterial::JohnsonCookMaterial(const MaterialParameters& params)
+    : Material(params),
+      flow_(params),
+      eos_(params),
+      damage_(params),
+      G_(params.shear_modulus()),
+      two_G_(2.0 * G_),
+      three_G_(3.0 * G_),
+      smoothing_time_(params.strain_rate_smoothing_time),
+      taylor_quinney_(params.taylor_quinney),
+      heat_per_work_(0.0),
+      sure_elastic_q_(params.jc_A),
+      room_temperature_(params.room_temperature) {
+  const std::string who = "material '" + params.name + "' (Johnson-Cook): ";
+  if (!(params.density > 0.0)) throw std::invalid_argument(who + "need density > 0, got " + std::to_string(params.density));
+  if (!(params.youngs_modulus > 0.0) || !(params.poisson_ratio > -1.0 && params.poisson_ratio < 0.5))
+    throw std::invalid_argument(who + "need E > 0 and -1 < nu < 0.5, got E = " + std::to_string(params.youngs_modulus) +
+                                " Pa, nu = " + std::to_string(params.poisson_ratio));
+  if (!(smoothing_time_ >= 0.0))
+    throw std::invalid_argument(who + "need strain_rate_smoothing_time >= 0, got " + std::to_string(smoothing_time_));
+  if (!(params.taylor_quinney >= 0.0 && params.taylor_quinney <= 1.0))
+    throw std::invalid_argument(who + "need 0 <= Taylor-Quinney factor <= 1, got " +
+                                std::to_string(params.taylor_quinney));
+  if (params.taylor_quinney > 0.0) {
+    if (!(params.specific_heat > 0.0))
+      throw std::invalid_argument(who + "plastic heating (Taylor-Quinney " + std::to_string(params.taylor_quinney) +
+                                  ") needs specific_heat > 0, got " + std::to_string(params.specific_heat));
+    heat_per_work_ = params.taylor_quinney / params.specific_heat;
+  }
+}
+
+JohnsonCookMaterial::ReturnMapping JohnsonCookMaterial::return_mapping(double q_tr, double eps0, double old_rate,
+                                                                       double T0, double h, double dt) const {
+  // rate(x) = rate_base + x * rate_slope, T(x) = T0 + h (q_tr - 3G x) x
+  const double rate_slope = 1.0 / (smoothing_time_ + dt);
+  const double rate_base = smoothing_time_ * old_rate * rate_slope;
+  const double tol = kReturnTolerance * q_tr;
+
+  ReturnMapping out;
+  double lo = 0.0;                  // r(lo) > 0
+  double hi = q_tr / three_G_;      // r(hi) = -sigma_y <= 0
+  // Initial guess: last step's increment (exact in steady flow), else the perfectly plastic estimate.
+  double x = old_rate * dt;
+  if (!(x > 0.0 && x < hi)) x = 0.5 * hi;
+  if (!(x > 0.0)) x = hi;
+  for (int it = 1; it <= kMaxReturnIterations; ++it) {
+    const double rate = rate_base + x * rate_slope;
+    const double q = q_tr - three_G_ * x;
+    const double T = T0 + h * q * x;
+    const FlowStressValue f = flow_.evaluate(eps0 + x, rate, T);
+    const double r = q - f.stress;
+    out = {x, f.stress, rate, T, f.log_rate_ratio, it};
+    if (std::abs(r) <= tol) break;
+    if (r > 0.0) lo = x; else hi = x;
+    const double dr =
+        -three_G_ - f.d_strain - f.d_rate * rate_slope - f.d_temperature * h * (q_tr - 2.0 * three_G_ * x);
+    double next = x - r / dr;  // a NaN (inf slope) fails the bracket test below
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    if (next == x) break;  // bracket collapsed to one double
+    x = next;
+  }
+  return out;
+}
+
+ConstitutiveIncrement JohnsonCookMaterial::update(Particles& p, std::size_t i, const Mat2& L,
+                                                  const StepContext& ctx) const {
+  const double dt = ctx.dt;
+  ConstitutiveIncrement inc;
+  if (!(dt > 0.0)) return inc;
+
+  // 1. Strain increment, plane strain: dEps = sym(L) dt, dEps_zz = 0; deviatoric part has
+  //    de_zz = -dEps_v/3 != 0.
+  const double exx = L(0, 0) * dt;
+  const double eyy = L(1, 1) * dt;
+  const double exy = 0.5 * (L(0, 1) + L(1, 0)) * dt;
+  const double ev = exx + eyy;
+  const double ev3 = ev / 3.0;
+
+  // 2. Objective (Jaumann) rotation of the undamaged stress; the rotation keeps the trace.
+  const PlaneStrainTensor rotated = jaumann_rotate(p.effective_stress[i], L, dt);
+  const double old_pressure = -rotated.mean();
+  PlaneStrainTensor s = rotated.plus_identity(old_pressure);
+
+  const double volume = p.volume[i];
+  const double density = p.mass[i] / volume;
+  const double T0 = p.temperature[i];
+  const double eps0 = p.plastic_strain[i];
+  const double D0 = damage_.enabled() ? p.damage[i] : 0.0;
+  const bool failed0 = damage_.failed(D0);
+
+  // 3. Deviatoric predictor-corrector (radial return on the undamaged stress).
+  double dep = 0.0;     // plastic strain increment
+  double q = 0.0;       // final undamaged von Mises stress (= sigma_y when plastic)
+  double T = T0;        // end-of-step temperature
+  double rate = smoothed_rate(p.plastic_strain_rate[i], 0.0, dt);
+  double log_rate = 0.0;
+  bool log_rate_known = false;
+  if (failed0 || flow_.melted(T0)) {
+    s = {};  // failed or molten: no deviatoric stress, no plastic flow
+  } else {
+    s.xx += two_G_ * (exx - ev3);
+    s.yy += two_G_ * (eyy - ev3);
+    s.zz += two_G_ * (-ev3);
+    s.xy += two_G_ * exy;
+    const double q_tr = std::sqrt(1.5 * s.contract(s));
+    q = q_tr;
+    const bool surely_elastic = q_tr <= sure_elastic_q_ && T0 <= room_temperature_;
+    if (!surely_elastic && q_tr > flow_.yield_stress(eps0, rate, T0)) {
+      const double h = heat_per_work_ * (1.0 - D0) / density;
+      const ReturnMapping rm = return_mapping(q_tr, eps0, p.plastic_strain_rate[i], T0, h, dt);
+      dep = rm.plastic_increment;
+      q = q_tr - three_G_ * dep;
+      s = s * (q / q_tr);
+      rate = rm.rate;
+      T = rm.temperature;
+      log_rate = rm.log_rate_ratio;
+      log_rate_known = flow_.rate_dependent();
+    }
+  }
+
+  // 4. Pressure from the EOS at the end-of-step density and temperature (+ bulk viscosity).
+  const double pressure = eos_.pressure(old_pressure, ev, density, T);
+  double viscous_pressure = 0.0;
+  if (eos_.has_bulk_viscosity() && ev < 0.0) {
+    const double c = std::sqrt((eos_.bulk_modulus(density) + 4.0 / 3.0 * G_) / density);
+    viscous_pressure = eos_.bulk_viscosity(density, ev / dt, ctx.cell_size, c);
+    inc.viscous_dissipation = viscous_pressure * (-ev) * volume;
+  }
+
+  // 5. Damage: initiation and evolution on the undamaged state, then degradation.
+  double D = D0;
+  double before = dep, after = 0.0;  // plastic increment before / after initiation
+  bool failed = failed0;
+  if (damage_.enabled() && dep > 0.0 && !failed0) {
+    DamageState st{p.damage_initiation[i], D0, p.plastic_displacement[i], p.initiation_yield_stress[i]};
+    double eps_f = 0.0;
+    if (st.initiation < 1.0) {
+      if (!log_rate_known) log_rate = flow_.log_rate_ratio(rate);
+      eps_f = damage_.failure_strain(stress_triaxiality(pressure, q), log_rate, flow_.homologous_temperature(T));
+    }
+    const DamageStep ds = damage_.advance(st, dep, eps_f, q, ctx.cell_size);
+    p.damage_initiation[i] = st.initiation;
+    p.damage[i] = st.damage;
+    p.plastic_displacement[i] = st.plastic_displacement;
+    p.initiation_yield_stress[i] = st.initiation_yield_stress;
+    D = st.damage;
+    before = ds.strain_before_initiation;
+    after = ds.strain_after_initiation;
+    failed = ds.failed;
+  }
+
+  // 6. Energy increments (theory_materials.md §6). Work of the actual (degraded) stress through
+  //    plastic flow: (1 - D0) sigma_y d(eps_p) V. Before initiation it is plastic work; after initiation
+  //    it belongs to the fracture process (damage dissipation), together with the elastic energy
+  //    released as D grows, Y dD V with Y = s:s/(4G) + <-p>^2/(2K).
+  if (dep > 0.0) {
+    const double work_density = (1.0 - D0) * q;  // per unit plastic strain and volume
+    inc.plastic_work = work_density * before * volume;
+    inc.damage_dissipation = work_density * after * volume;
+    // Heat = chi x all plastic work (before and after initiation); it equals m c dT exactly.
+    inc.heat = taylor_quinney_ * work_density * dep * volume;
+  }
+  if (D > D0) {
+    double Y = s.contract(s) / (4.0 * G_);
+    if (pressure < 0.0) Y += pressure * pressure / (2.0 * eos_.bulk_modulus(density));
+    // At failure the rest of the stored deviatoric and tensile energy goes too: D jumps to 1.
+    inc.damage_dissipation += Y * ((failed ? 1.0 : D) - D0) * volume;
+  }
+  if (failed) s = {};
+
+  // 7. Store the state: undamaged stress (no viscosity) for the next step, degraded stress for forces.
+  p.effective_stress[i] = s.plus_identity(-pressure);
+  p.stress[i] = degraded_stress(s, pressure + viscous_pressure, D, failed);
+  p.plastic_strain[i] = eps0 + dep;
+  p.plastic_strain_rate[i] = rate;
+  p.temperature[i] = T;
+  return inc;
+}
+
+double JohnsonCookMaterial::wave_speed(const Particles& p, std::size_t i) const {
+  const double density = p.mass[i] / p.volume[i];
+  const double K = eos_.bulk_modulus(density);
+  if (damage_.failed(damage_.enabled() ? p.damage[i] : 0.0) || flow_.melted(p.temperature[i])) {
+    // No shear stiffness. A failed particle that has opened up (V > V0) carries no stress at all; it
+    // must not shorten the step through its low density, so use at least the reference density.
+    return std::sqrt(K / std::max(density, params_.density));
+  }
+  return std::sqrt((K + 4.0 / 3.0 * G_) / density);
+}
+
+double JohnsonCookMaterial::elastic_energy(const Particles& p, std::size_t i) const {
+  // Stored energy of the damaged solid, (1 - D) psi_dev + psi_vol with psi_vol unscaled in
+  // compression: the energy whose release rate Y appears in the damage dissipation of update().
+  const PlaneStrainTensor& sigma = p.effective_stress[i];
+  const double pressure = -sigma.mean();
+  const PlaneStrainTensor s = sigma.plus_identity(pressure);
+  const double D = damage_.enabled() ? p.damage[i] : 0.0;
+  const bool failed = damage_.failed(D);
+  const double keep = failed ? 0.0 : 1.0 - D;
+  const double K = eos_.bulk_modulus(p.mass[i] / p.volume[i]);
+  const double vol = pressure * pressure / (2.0 * K) * (pressure >= 0.0 ? 1.0 : keep);
+  return p.volume[i] * (keep * s.contract(s) / (4.0 * G_) + vol);
 }
 
 }  // namespace mpmcut

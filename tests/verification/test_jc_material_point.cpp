@@ -206,7 +206,9 @@ TEST(JohnsonCookMaterialPoint, MeltCarriesNoDeviator) {
 // algorithms.md §7.6 rate floor and T* clamp: tiny rates (1e-8/s) and temperatures below room give finite
 // results and the quasi-static, room-temperature yield surface A + B eps^n.
 TEST(JohnsonCookMaterialPoint, TinyRatesAndColdTemperaturesStayFinite) {
-  const JohnsonCookMaterial jc(ti64());
+  MaterialParameters m = ti64();
+  m.taylor_quinney = 0.0;  // keep T fixed so that the closed form below applies
+  const JohnsonCookMaterial jc(m);
   for (double T : {4.0, 77.0, 298.0}) {
     MaterialPointDriver d(jc, T, 5e-6);
     d.run(simple_shear(1e-8), 2e4, 2000);  // gamma = 0.4
@@ -217,7 +219,7 @@ TEST(JohnsonCookMaterialPoint, TinyRatesAndColdTemperaturesStayFinite) {
     EXPECT_GT(r.plastic_strain, 0.2);
     EXPECT_NEAR(r.effective_stress.von_mises(), 862e6 + 331e6 * std::pow(r.plastic_strain, 0.34),
                 1e-8 * 1e9);
-    EXPECT_LT(r.temperature, T + 5.0);  // heating is tiny at 1e-8 / s?  No: adiabatic, it is not!
+    EXPECT_LT(r.plastic_strain_rate, 1e-7);
   }
 }
 
@@ -287,24 +289,26 @@ TEST(JohnsonCookMaterialPoint, InitiationAtFailureStrain) {
     double eps_at_initiation = -1.0;
     for (int k = 0; k < 20000 && d.last().damage_initiation < 1.0; ++k) {
       const MaterialPointRecord before = d.last();
-      const MaterialPointRecord& r =
+      const MaterialPointRecord r =
           c.eta == 0.0 ? d.step(simple_shear(0.5), dt)
                        : d.step_with_triaxiality(diagonal(c.eta < 0 ? -0.25 : 0.25, 0.0), dt, c.eta);
       if (r.plastic_strain > before.plastic_strain) {
         EXPECT_NEAR(triaxiality(r.stress), c.eta, 1e-9);
         EXPECT_LT(r.plastic_strain_rate, 1.0);  // below epsdot0: no rate term
       }
-      if (r.damage_initiation >= 1.0) {
-        // initiation happened inside this step: interpolate omega linearly over the step
-        const double w = (1.0 - before.damage_initiation) / (r.damage_initiation - before.damage_initiation +
-                                                             (r.damage_initiation == 1.0 ? 0.0 : 0.0));
-        (void)w;
+      if (r.damage_initiation < 1.0) {
+        // omega = sum d(eps_p)/eps_f = eps_p/eps_f on this proportional path
+        EXPECT_NEAR(r.damage_initiation, r.plastic_strain / ef, 1e-9) << "eta " << c.eta;
+      } else {
+        // initiation inside this step: omega = 1 where eps_p = eps_f, inside [eps_p^(k-1), eps_p^k]
         eps_at_initiation = before.plastic_strain + (1.0 - before.damage_initiation) * ef;
-        EXPECT_GE(r.plastic_strain, eps_at_initiation);
+        EXPECT_GE(eps_at_initiation, before.plastic_strain);
+        EXPECT_LE(eps_at_initiation, r.plastic_strain);
+        EXPECT_LT(r.plastic_strain - before.plastic_strain, 0.01 * ef);
+        EXPECT_LT(r.damage, 1e-3);  // only the rest of this step softened
       }
     }
     ASSERT_GT(eps_at_initiation, 0.0) << "no initiation for eta " << c.eta;
-    EXPECT_NEAR(eps_at_initiation, ef, 0.01 * ef) << "eta " << c.eta;
     EXPECT_NEAR(eps_at_initiation, ef, 1e-6 * ef) << "eta " << c.eta;
   }
 }
@@ -323,7 +327,7 @@ TEST(JohnsonCookMaterialPoint, InitiationUsesRecordedRateAndTemperature) {
     const double de = h[k].plastic_strain - h[k - 1].plastic_strain;
     if (de <= 0.0) continue;
     const double ef = jc.damage_model().failure_strain(triaxiality(h[k].effective_stress),
-                                                       std::log(h[k].plastic_strain_rate / 1.0),
+                                                       std::max(0.0, std::log(h[k].plastic_strain_rate / 1.0)),
                                                        (h[k].temperature - 298.0) / (1878.0 - 298.0));
     omega += de / ef;
     EXPECT_NEAR(h[k].damage_initiation, omega, 1e-10 * omega);
@@ -346,13 +350,13 @@ TEST(JohnsonCookMaterialPoint, LinearSofteningDissipatesFractureEnergy) {
   const double gamma_dot = 1.0, dt = 1e-3;
   int k = 0;
   while (d.last().damage < m.max_damage && k++ < 40000) {
-    const MaterialPointRecord& r = d.step(simple_shear(gamma_dot), dt);
+    const MaterialPointRecord r = d.step(simple_shear(gamma_dot), dt);
     if (r.damage_initiation >= 1.0) {
       EXPECT_EQ(r.initiation_yield_stress, 862e6);
       EXPECT_NEAR(r.damage, std::min(r.plastic_displacement / uf, m.max_damage), 1e-12);
     }
   }
-  const MaterialPointRecord& r = d.last();
+  const MaterialPointRecord r = d.last();
   ASSERT_EQ(r.damage, m.max_damage);
   EXPECT_NEAR(r.plastic_displacement, m.max_damage * uf, 0.01 * uf);
   const double per_area = r.cumulative.damage_dissipation / (r.volume / L);
@@ -363,7 +367,7 @@ TEST(JohnsonCookMaterialPoint, LinearSofteningDissipatesFractureEnergy) {
   d.run(simple_shear(gamma_dot), dt, 100);
   EXPECT_EQ(d.last().stress.von_mises(), 0.0);
   EXPECT_EQ(d.last().cumulative.damage_dissipation, r.cumulative.damage_dissipation);
-  EXPECT_EQ(d.last().elastic_energy, 0.0);
+  EXPECT_LT(d.last().elastic_energy, 1e-6);  // only round-off pressure left
 }
 
 // theory §5, Eq. (5.4): exponential law through the full update: the dissipation after initiation per unit
@@ -396,7 +400,8 @@ TEST(JohnsonCookMaterialPoint, FailedParticleKeepsCompressionOnly) {
   d.run(diagonal(-1e3, 0.0), 1e-6, 10);  // compress: eps_v = -1e-2
   PlaneStrainTensor s = d.last().stress;
   EXPECT_EQ(s.xy, 0.0);
-  EXPECT_EQ(s.von_mises(), 0.0);
+  EXPECT_EQ(s.xx, s.yy);
+  EXPECT_EQ(s.xx, s.zz);
   EXPECT_GT(-s.mean(), 0.0);
   EXPECT_GT(d.last().elastic_energy, 0.0);
   d.run(diagonal(2e3, 0.0), 1e-6, 10);  // pull back past the original volume: tension
@@ -433,11 +438,26 @@ TEST(JohnsonCookMaterialPoint, MieGruneisenPressureFollowsDensity) {
   EXPECT_GT(jc.wave_speed(d.particles(), 0), std::sqrt((4430.0 * 5130.0 * 5130.0) / 4430.0));
 }
 
-// Linear EOS P-wave speed sqrt((K + 4G/3)/rho) = 6313 m/s for Ti-6Al-4V (ti64_data.md §1.4, computed).
+// theory §7.1: linear EOS P-wave speed sqrt((K + 4G/3)/rho) = 6313 m/s for Ti-6Al-4V (ti64_data.md §1.4,
+// computed) at the reference density, at the current density otherwise; failed or molten particles have
+// no shear stiffness, and an opened failed particle does not raise the speed through its low density.
 TEST(JohnsonCookMaterialPoint, WaveSpeed) {
-  const JohnsonCookMaterial jc(ti64());
+  const MaterialParameters m = with_damage(ti64());
+  const JohnsonCookMaterial jc(m);
   MaterialPointDriver d(jc, 298.0, 5e-6);
-  EXPECT_NEAR(jc.wave_speed(d.particles(), 0), 6313.0, 1.0);
+  Particles& p = d.particles();
+  EXPECT_NEAR(jc.wave_speed(p, 0), 6313.0, 1.0);
+  const double K = m.bulk_modulus(), M = K + 4.0 / 3.0 * m.shear_modulus();
+  p.volume[0] = 0.98;
+  EXPECT_NEAR(jc.wave_speed(p, 0), std::sqrt(M / (4430.0 / 0.98)), 1e-9);
+  p.damage[0] = m.max_damage;
+  EXPECT_NEAR(jc.wave_speed(p, 0), std::sqrt(K / (4430.0 / 0.98)), 1e-9);
+  p.volume[0] = 3.0;  // an open crack
+  EXPECT_NEAR(jc.wave_speed(p, 0), std::sqrt(K / 4430.0), 1e-9);
+  p.damage[0] = 0.0;
+  p.volume[0] = 1.0;
+  p.temperature[0] = 1900.0;  // molten
+  EXPECT_NEAR(jc.wave_speed(p, 0), std::sqrt(K / 4430.0), 1e-9);
 }
 
 // Bulk viscosity (theory §3, Eq. (3.3)): only in compression, only in the force stress (not in the stored
@@ -448,11 +468,11 @@ TEST(JohnsonCookMaterialPoint, BulkViscosityInCompressionOnly) {
   m.bulk_viscosity_quadratic = 1.2;
   const JohnsonCookMaterial jc(m);
   MaterialPointDriver d(jc, 298.0, 5e-6);
-  const MaterialPointRecord& c = d.step(diagonal(-1e6, 0.0), 1e-9);
-  EXPECT_GT(c.stress.mean(), -1.0 * 0.0 + c.effective_stress.mean() * 10.0);  // more compressive than EOS alone
-  EXPECT_LT(c.stress.mean(), c.effective_stress.mean());
+  const MaterialPointRecord c = d.step(diagonal(-1e6, 0.0), 1e-9);
+  EXPECT_LT(c.stress.mean(), c.effective_stress.mean());  // more compressive than the EOS alone
+  EXPECT_EQ(c.stress.xy, c.effective_stress.xy);
   EXPECT_GT(c.increment.viscous_dissipation, 0.0);
-  const MaterialPointRecord& t = d.step(diagonal(1e6, 0.0), 1e-9);
+  const MaterialPointRecord t = d.step(diagonal(1e6, 0.0), 1e-9);
   EXPECT_EQ(t.stress.mean(), t.effective_stress.mean());
   EXPECT_EQ(t.increment.viscous_dissipation, 0.0);
 }

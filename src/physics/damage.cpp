@@ -1,0 +1,102 @@
+#include "physics/damage.hpp"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace mpmcut {
+
+JohnsonCookDamage::JohnsonCookDamage(const MaterialParameters& p)
+    : enabled_(p.damage_enabled),
+      D1_(p.jc_D1),
+      D2_(p.jc_D2),
+      D3_(p.jc_D3),
+      D4_(p.jc_D4),
+      D5_(p.jc_D5),
+      min_failure_strain_(p.min_failure_strain),
+      evolution_(p.damage_evolution),
+      fracture_energy_(p.fracture_energy),
+      inverse_fracture_energy_(p.fracture_energy > 0.0 ? 1.0 / p.fracture_energy : 0.0),
+      max_damage_(p.max_damage) {
+  if (!enabled_) return;
+  const std::string who = "material '" + p.name + "' (damage): ";
+  if (!(min_failure_strain_ > 0.0))
+    throw std::invalid_argument(who + "need min_failure_strain > 0, got " + std::to_string(min_failure_strain_));
+  if (!(fracture_energy_ >= 0.0))
+    throw std::invalid_argument(who + "need fracture energy G_f >= 0, got " + std::to_string(fracture_energy_) +
+                                " J/m^2");
+  if (!(max_damage_ > 0.0 && max_damage_ <= 1.0))
+    throw std::invalid_argument(who + "need 0 < max_damage <= 1, got " + std::to_string(max_damage_));
+}
+
+double JohnsonCookDamage::failure_strain(double eta, double log_rate_ratio, double t_star) const {
+  double ef = D1_ + D2_ * std::exp(D3_ * eta);
+  if (D4_ != 0.0) ef *= 1.0 + D4_ * log_rate_ratio;
+  if (D5_ != 0.0) ef *= 1.0 + D5_ * t_star;
+  // D1 < 0 (Ti-6Al-4V) makes eps_f <= 0 at high triaxiality: clamp to a small positive strain.
+  return ef >= min_failure_strain_ ? ef : min_failure_strain_;  // (a NaN also falls back to the minimum)
+}
+
+DamageStep JohnsonCookDamage::advance(DamageState& s, double d_eps, double eps_f, double flow_stress,
+                                      double length) const {
+  DamageStep step;
+  step.damage_before = s.damage;
+  if (s.damage >= max_damage_) {
+    step.failed = true;
+    return step;
+  }
+  if (!(d_eps > 0.0)) return step;
+  double after = d_eps;
+  if (s.initiation < 1.0) {
+    const double d_omega = d_eps / eps_f;
+    if (s.initiation + d_omega < 1.0) {
+      s.initiation += d_omega;
+      step.strain_before_initiation = d_eps;
+      return step;
+    }
+    // omega crosses 1 inside the increment: split it so that initiation sits at omega = 1 exactly.
+    const double before = d_eps * (1.0 - s.initiation) / d_omega;
+    step.strain_before_initiation = before;
+    after = d_eps - before;
+    s.initiation = 1.0;
+    s.initiation_yield_stress = flow_stress;
+    s.plastic_displacement = 0.0;
+    step.initiated_now = true;
+    if (fracture_energy_ <= 0.0) {  // G_f = 0: instantaneous failure (not recommended, but defined)
+      s.damage = max_damage_;
+      step.strain_after_initiation = after;
+      step.failed = true;
+      return step;
+    }
+  }
+  step.strain_after_initiation = after;
+  const double du = length * after;
+  s.plastic_displacement += du;
+  double D;
+  if (evolution_ == DamageEvolution::Linear) {
+    D = s.plastic_displacement * s.initiation_yield_stress * 0.5 * inverse_fracture_energy_;  // u_pl / u_f
+  } else {
+    // 1 - D = exp(-W/G_f) with W = int sigma_y du_pl: multiply the intact fraction by exp(-dW/G_f),
+    // so no extra state is needed for W.
+    D = 1.0 - (1.0 - s.damage) * std::exp(-flow_stress * du * inverse_fracture_energy_);
+  }
+  if (D >= max_damage_) {
+    D = max_damage_;
+    step.failed = true;
+  }
+  s.damage = D > s.damage ? D : s.damage;  // never heals
+  return step;
+}
+
+PlaneStrainTensor degraded_stress(const PlaneStrainTensor& s, double pressure, double D, bool failed) {
+  if (failed) {
+    const double pc = pressure > 0.0 ? pressure : 0.0;
+    return {-pc, -pc, -pc, 0.0};
+  }
+  const double keep = 1.0 - D;
+  const double pe = pressure >= 0.0 ? pressure : keep * pressure;
+  return {keep * s.xx - pe, keep * s.yy - pe, keep * s.zz - pe, keep * s.xy};
+}
+
+}  // namespace mpmcut

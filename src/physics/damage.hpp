@@ -1,0 +1,75 @@
+#pragma once
+// Ductile damage: Johnson-Cook initiation and Hillerborg (fracture-energy) evolution
+// (Johnson & Cook 1985; Hillerborg, Modeer & Petersson 1976; algorithms.md §5; theory_materials.md §5).
+//
+// Initiation:  eps_f = [D1 + D2 exp(D3 eta)] [1 + D4 ln epsdot*] [1 + D5 T*],  eps_f >= min_failure_strain,
+//              eta = -p/q (tension positive), epsdot* floored at 1, T* clamped to [0, 1];
+//              omega += d(eps_p)/eps_f while omega < 1 (frozen once it reaches 1).
+// Evolution after initiation:  u_pl += L d(eps_p)  (L = cell size)
+//              linear:       D = u_pl/u_f,  u_f = 2 G_f/sigma_y0  (sigma_y0 = flow stress at initiation)
+//              exponential:  D = 1 - exp(-int sigma_y du_pl / G_f)  (sigma_y undamaged)
+//              D <= max_damage; D = max_damage means fully failed.
+// Degradation: sigma = (1 - D) s - p_eff I,  p_eff = p if p >= 0 (compression kept) else (1 - D) p;
+//              failed: s = 0, p_eff = max(p, 0).
+#include "core/scene.hpp"
+#include "core/tensor.hpp"
+
+namespace mpmcut {
+
+// The per-particle damage variables (mirrors the Particles arrays of the same names).
+struct DamageState {
+  double initiation = 0.0;               // omega, -
+  double damage = 0.0;                   // D, -
+  double plastic_displacement = 0.0;     // u_pl since initiation, m
+  double initiation_yield_stress = 0.0;  // sigma_y0, Pa
+};
+
+// What one plastic increment did to the damage state.
+struct DamageStep {
+  double strain_before_initiation = 0.0;  // part of d(eps_p) spent while omega < 1
+  double strain_after_initiation = 0.0;   // part spent after initiation (drives u_pl)
+  double damage_before = 0.0;             // D at the start of the increment
+  bool initiated_now = false;             // omega crossed 1 in this increment
+  bool failed = false;                    // D reached max_damage (now or before)
+};
+
+class JohnsonCookDamage {
+ public:
+  // Throws std::invalid_argument when damage is enabled with unusable constants.
+  explicit JohnsonCookDamage(const MaterialParameters& params);
+
+  bool enabled() const { return enabled_; }
+  double max_damage() const { return max_damage_; }
+  bool failed(double damage) const { return enabled_ && damage >= max_damage_; }
+
+  // JC failure strain. log_rate_ratio = max(ln(epsdot/epsdot0), 0), homologous_temperature in [0, 1].
+  double failure_strain(double triaxiality, double log_rate_ratio, double homologous_temperature) const;
+
+  // u_f = 2 G_f / sigma_y0 of the linear law, m.
+  double failure_displacement(double initiation_yield_stress) const {
+    return 2.0 * fracture_energy_ / initiation_yield_stress;
+  }
+
+  // Advances omega, u_pl and D over a plastic increment d_eps_p > 0. failure_strain is used only
+  // while omega < 1; the increment is split exactly at omega = 1 so that initiation happens at
+  // eps_p = eps_f for a constant eps_f. flow_stress = current undamaged sigma_y; length = L.
+  DamageStep advance(DamageState& state, double d_eps_p, double failure_strain, double flow_stress,
+                     double length_m) const;
+
+ private:
+  bool enabled_;
+  double D1_, D2_, D3_, D4_, D5_;
+  double min_failure_strain_;
+  DamageEvolution evolution_;
+  double fracture_energy_, inverse_fracture_energy_;
+  double max_damage_;
+};
+
+// eta = -p/q (tension positive; pressure p positive in compression); 0 when q = 0.
+inline double stress_triaxiality(double pressure, double q) { return q > 0.0 ? -pressure / q : 0.0; }
+
+// The Cauchy stress carried by a damaged particle from its undamaged deviator and pressure.
+PlaneStrainTensor degraded_stress(const PlaneStrainTensor& effective_deviator, double pressure, double damage,
+                                  bool failed);
+
+}  // namespace mpmcut

@@ -1,0 +1,125 @@
+#include "physics/flow_stress.hpp"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace mpmcut {
+
+namespace {
+[[noreturn]] void reject(const MaterialParameters& p, const std::string& what) {
+  throw std::invalid_argument("material '" + p.name + "' (Johnson-Cook flow stress): " + what);
+}
+}  // namespace
+
+JohnsonCookFlowStress::JohnsonCookFlowStress(const MaterialParameters& p)
+    : A_(p.jc_A),
+      B_(p.jc_B),
+      n_(p.jc_n),
+      C_(p.jc_C),
+      m_(p.jc_m),
+      reference_rate_(p.reference_strain_rate),
+      inverse_reference_rate_(0.0),
+      room_temperature_(p.room_temperature),
+      melting_temperature_(p.melting_temperature),
+      inverse_temperature_range_(0.0),
+      hardening_is_linear_(p.jc_n == 1.0),
+      rate_dependent_(p.jc_C != 0.0),
+      thermal_is_linear_(p.jc_m == 1.0) {
+  if (!(A_ >= 0.0) || !(B_ >= 0.0) || A_ + B_ <= 0.0)
+    reject(p, "need A >= 0, B >= 0 and A + B > 0, got A = " + std::to_string(A_) + " Pa, B = " + std::to_string(B_) +
+                  " Pa");
+  if (!(n_ > 0.0)) reject(p, "need n > 0, got " + std::to_string(n_));
+  if (!(C_ >= 0.0)) reject(p, "need C >= 0, got " + std::to_string(C_));
+  if (!(m_ > 0.0)) reject(p, "need m > 0, got " + std::to_string(m_));
+  if (!(reference_rate_ > 0.0))
+    reject(p, "need a reference strain rate > 0, got " + std::to_string(reference_rate_) + " 1/s");
+  if (!(melting_temperature_ > room_temperature_))
+    reject(p, "need melting temperature > room temperature, got T_m = " + std::to_string(melting_temperature_) +
+                  " K, T_r = " + std::to_string(room_temperature_) + " K");
+  inverse_reference_rate_ = 1.0 / reference_rate_;
+  inverse_temperature_range_ = 1.0 / (melting_temperature_ - room_temperature_);
+}
+
+double JohnsonCookFlowStress::homologous_temperature(double T) const {
+  const double t = (T - room_temperature_) * inverse_temperature_range_;
+  return t <= 0.0 ? 0.0 : (t >= 1.0 ? 1.0 : t);
+}
+
+double JohnsonCookFlowStress::log_rate_ratio(double rate) const {
+  const double r = rate * inverse_reference_rate_;
+  return r > 1.0 ? std::log(r) : 0.0;  // floor epsdot* >= 1 (also catches rate = 0 and NaN-free)
+}
+
+double JohnsonCookFlowStress::hardening(double eps) const {
+  if (eps <= 0.0 || B_ == 0.0) return A_;
+  return A_ + B_ * (hardening_is_linear_ ? eps : std::pow(eps, n_));
+}
+
+double JohnsonCookFlowStress::rate_factor(double rate) const {
+  return rate_dependent_ ? 1.0 + C_ * log_rate_ratio(rate) : 1.0;
+}
+
+double JohnsonCookFlowStress::thermal_factor(double T) const {
+  const double t = homologous_temperature(T);
+  if (t <= 0.0) return 1.0;
+  if (t >= 1.0) return 0.0;
+  return 1.0 - (thermal_is_linear_ ? t : std::pow(t, m_));
+}
+
+double JohnsonCookFlowStress::yield_stress(double eps, double rate, double T) const {
+  return hardening(eps) * rate_factor(rate) * thermal_factor(T);
+}
+
+FlowStressValue JohnsonCookFlowStress::evaluate(double eps, double rate, double T) const {
+  FlowStressValue v;
+  // Strain hardening H and dH/deps. With n < 1 the slope is infinite at eps = 0; the return
+  // mapping never asks for it there (it brackets), but report +inf rather than a NaN.
+  double H = A_, dH = 0.0;
+  if (B_ != 0.0) {
+    if (hardening_is_linear_) {
+      H += B_ * (eps > 0.0 ? eps : 0.0);
+      dH = B_;
+    } else if (eps > 0.0) {
+      const double en = std::pow(eps, n_);
+      H += B_ * en;
+      dH = n_ * B_ * en / eps;
+    } else {
+      dH = n_ < 1.0 ? std::numeric_limits<double>::infinity() : (n_ == 1.0 ? B_ : 0.0);
+    }
+  }
+  // Rate factor R and dR/depsdot (zero on the floor).
+  double R = 1.0, dR = 0.0;
+  if (rate_dependent_) {
+    const double r = rate * inverse_reference_rate_;
+    if (r > 1.0) {
+      v.log_rate_ratio = std::log(r);
+      R = 1.0 + C_ * v.log_rate_ratio;
+      dR = C_ / rate;
+    }
+  }
+  // Thermal factor Theta and dTheta/dT (zero outside 0 < T* < 1).
+  double Th = 1.0, dTh = 0.0;
+  const double t = (T - room_temperature_) * inverse_temperature_range_;
+  if (t >= 1.0) {
+    Th = 0.0;
+  } else if (t > 0.0) {
+    if (thermal_is_linear_) {
+      Th = 1.0 - t;
+      dTh = -inverse_temperature_range_;
+    } else {
+      const double tm = std::pow(t, m_);
+      Th = 1.0 - tm;
+      dTh = -m_ * tm / t * inverse_temperature_range_;
+    }
+  }
+  v.stress = H * R * Th;
+  v.d_strain = dH * R * Th;
+  v.d_rate = H * dR * Th;
+  v.d_temperature = H * R * dTh;
+  if (Th == 0.0) v.d_strain = 0.0;  // avoid inf * 0 at eps = 0 in the melt
+  return v;
+}
+
+}  // namespace mpmcut
