@@ -94,7 +94,7 @@ void expect_error(const std::string& text, const std::string& marker, std::initi
 
 TEST(SceneParser, EveryShippedCaseParses) {
   int count = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(kCases)) {
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(kCases)) {
     if (entry.path().extension() != ".toml") continue;
     SCOPED_TRACE(entry.path().string());
     EXPECT_NO_THROW(load_scene(entry.path()));
@@ -458,7 +458,7 @@ Scene round_trip(const Scene& s) {
 }
 
 TEST(SceneWriter, RoundTripsEveryShippedCase) {
-  for (const auto& entry : std::filesystem::directory_iterator(kCases)) {
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(kCases)) {
     if (entry.path().extension() != ".toml") continue;
     SCOPED_TRACE(entry.path().string());
     const Scene s = load_scene(entry.path());

@@ -1,0 +1,144 @@
+#include "app/plot_command.hpp"
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace mpmcut {
+
+namespace {
+
+// A temporary folder holding tools/*.py (and data/experiments/*), removed when it goes out of scope.
+class ToolFolder {
+ public:
+  ToolFolder() {
+    if (const char* dir = std::getenv("MPMCUT_TOOLS_DIR"); dir && *dir) {
+      tools_ = dir;
+      return;
+    }
+    std::string pattern = (std::filesystem::temp_directory_path() / "mpmcut_tools_XXXXXX").string();
+    if (!mkdtemp(pattern.data())) throw std::runtime_error("cannot create a temporary folder for the plot scripts");
+    root_ = pattern;
+    for (const EmbeddedText& f : embedded_tool_files()) {
+      const std::filesystem::path p = root_ / std::filesystem::path(f.path);
+      std::filesystem::create_directories(p.parent_path());
+      std::ofstream(p, std::ios::binary) << f.text;
+    }
+    tools_ = root_ / "tools";
+  }
+  ~ToolFolder() {
+    std::error_code ec;
+    if (!root_.empty()) std::filesystem::remove_all(root_, ec);
+  }
+  ToolFolder(const ToolFolder&) = delete;
+  ToolFolder& operator=(const ToolFolder&) = delete;
+  const std::filesystem::path& tools() const { return tools_; }
+
+ private:
+  std::filesystem::path root_, tools_;
+};
+
+// fork + exec + wait; stdout/stderr inherited unless `quiet`. Returns the exit status, 127 if exec failed.
+int run_and_wait(const std::vector<std::string>& argv, bool quiet) {
+  std::vector<char*> c_argv;
+  for (const std::string& a : argv) c_argv.push_back(const_cast<char*>(a.c_str()));
+  c_argv.push_back(nullptr);
+  std::cout.flush();
+  std::cerr.flush();
+  const pid_t pid = fork();
+  if (pid < 0) return 127;
+  if (pid == 0) {
+    if (quiet) {
+      const FILE* devnull = freopen("/dev/null", "w", stdout);
+      (void)devnull;
+      dup2(STDOUT_FILENO, STDERR_FILENO);
+    }
+    execv(c_argv[0], c_argv.data());
+    _exit(127);
+  }
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0) {
+    if (errno != EINTR) return 127;
+  }
+  if (WIFEXITED(status)) return WEXITSTATUS(status);
+  return 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+}
+
+}  // namespace
+
+std::string_view embedded_tool_file(std::string_view path) {
+  for (const EmbeddedText& f : embedded_tool_files())
+    if (f.path == path) return f.text;
+  throw std::runtime_error(fmt::format("{} was not compiled into this mpmcut (CMakeLists.txt, embedded plot scripts)", path));
+}
+
+std::string python_interpreter() {
+  if (const char* p = std::getenv("MPMCUT_PYTHON"); p && *p) return p;
+  return "/usr/bin/python3";
+}
+
+bool python_plotting_available(bool need_meshio, std::string& why) {
+  const std::string python = python_interpreter();
+  if (access(python.c_str(), X_OK) != 0) {
+    why = fmt::format("{} not found: plots need Python 3 with numpy and matplotlib{} "
+                      "(Debian/Ubuntu: apt install python3-matplotlib{}; or set MPMCUT_PYTHON)",
+                      python, need_meshio ? " and meshio" : "", need_meshio ? " python3-meshio" : "");
+    return false;
+  }
+  const std::string imports = need_meshio ? "import numpy, matplotlib, meshio" : "import numpy, matplotlib";
+  if (run_and_wait({python, "-c", imports}, true) != 0) {
+    why = fmt::format("{} cannot '{}': install them (Debian/Ubuntu: apt install python3-matplotlib{}) "
+                      "or point MPMCUT_PYTHON at a Python that has them",
+                      python, imports, need_meshio ? " python3-meshio" : "");
+    return false;
+  }
+  return true;
+}
+
+int run_python_tool(const std::string& script, const std::vector<std::string>& args) {
+  ToolFolder folder;
+  const std::filesystem::path path = folder.tools() / script;
+  if (!std::filesystem::exists(path)) {
+    std::cerr << "error: plot script " << path << " not found\n";
+    return 127;
+  }
+  std::vector<std::string> argv{python_interpreter(), path.string()};
+  argv.insert(argv.end(), args.begin(), args.end());
+  return run_and_wait(argv, false);
+}
+
+void add_plot_command(CLI::App& app) {
+  struct Options {
+    std::string result_dir;
+    std::string snapshots = "last";
+  };
+  auto options = std::make_shared<Options>();
+  CLI::App* plot = app.add_subcommand(
+      "plot", "Draw PNG pictures of a result directory: the chip coloured by temperature, plastic strain and "
+              "damage with the tool, and the force history (needs /usr/bin/python3 with matplotlib and meshio)");
+  plot->add_option("result_dir", options->result_dir, "Result directory of a run")->required();
+  plot->add_option("--snapshots", options->snapshots,
+                   "Snapshots to draw: last (default), all, or snapshot numbers N,M,... (the last is always drawn)");
+  plot->callback([options]() {
+    if (!std::filesystem::is_directory(options->result_dir)) {
+      std::cerr << "error: " << options->result_dir << " is not a directory\n";
+      throw CLI::RuntimeError(2);
+    }
+    std::string why;
+    if (!python_plotting_available(true, why)) {
+      std::cerr << "warning: cannot plot: " << why << "\n";
+      throw CLI::RuntimeError(5);
+    }
+    const int code = run_python_tool("plot_result.py", {options->result_dir, "--snapshots", options->snapshots});
+    if (code != 0) std::cerr << "error: plotting failed (plot_result.py exit status " << code << ")\n";
+    throw CLI::RuntimeError(code);  // also on success: the subcommand is done, main() must not go on
+  });
+}
+
+}  // namespace mpmcut

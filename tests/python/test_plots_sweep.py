@@ -1,0 +1,90 @@
+"""End to end: `mpmcut sweep` over two cutting speeds on a tiny, coarse cut, then `mpmcut plot` on one case.
+
+usage: /usr/bin/python3 test_plots_sweep.py MPMCUT_BINARY SCRATCH_DIR
+Checks: the sweep exits 0; sweep.csv has one row per case, each complete with finite forces; sweep.md exists;
+forces_vs_speed.png, chip_vs_speed.png and chip_map.png are non-trivial PNGs; `mpmcut plot` writes forces.png and
+the chip pictures (temperature, plastic strain, damage, combined) of the last snapshot, all non-trivial.
+"""
+import csv
+import os
+import shutil
+import subprocess
+import sys
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plot_checks import check_png, fail  # noqa: E402
+
+# Three 25 um cells of tool travel at h = 0.1 mm (cell = t0/4, 1 particle per cell): about a second per case.
+CASE = """\
+title = "sweep test: tiny Ti-6Al-4V cut"
+[cutting]
+material = "ti64-johnson-1985"
+cutting_speed = 20.0
+uncut_chip_thickness = 0.1e-3
+cut_length = 75e-6
+cell_size = 25e-6
+particles_per_cell = 1
+snapshots = 2
+"""
+
+
+def main(binary, scratch):
+    shutil.rmtree(scratch, ignore_errors=True)
+    os.makedirs(scratch)
+    case = os.path.join(scratch, "tiny.toml")
+    with open(case, "w") as f:
+        f.write(CASE)
+    out = os.path.join(scratch, "sweep")
+    t0 = time.time()
+    p = subprocess.run([binary, "sweep", case, "--speeds", "20,50", "--feeds", "0.1e-3", "--jobs", "2", "--out", out],
+                       capture_output=True, text=True, timeout=300)
+    print(p.stdout, p.stderr, sep="\n")
+    if p.returncode != 0:
+        fail(f"sweep exit status {p.returncode}")
+    print(f"sweep took {time.time() - t0:.1f} s")
+    with open(os.path.join(out, "sweep.csv"), newline="") as f:
+        rows = list(csv.DictReader(f))
+    if sorted(r["case"] for r in rows) != ["v20mps_h0.1mm", "v50mps_h0.1mm"]:
+        fail(f"sweep.csv cases: {[r['case'] for r in rows]}")
+    for r in rows:
+        if r["status"] != "complete":
+            fail(f"{r['case']}: status {r['status']} ({r['message']})")
+        for key in ("mean_cutting_force_N_per_mm", "mean_thrust_force_N_per_mm", "max_temperature_K"):
+            try:
+                float(r[key])
+            except ValueError:
+                fail(f"{r['case']}: {key} = '{r[key]}' is not a number")
+        if float(r["speed_m_per_min"]) != 60 * float(r["speed_m_per_s"]):
+            fail(f"{r['case']}: m/min column inconsistent")
+    if not os.path.exists(os.path.join(out, "sweep.md")):
+        fail("sweep.md missing")
+    for name in ("forces_vs_speed.png", "chip_vs_speed.png", "chip_map.png"):
+        check_png(os.path.join(out, name))
+
+    # Pictures of one case.
+    case_dir = os.path.join(out, "v20mps_h0.1mm")
+    t0 = time.time()
+    p = subprocess.run([binary, "plot", case_dir], capture_output=True, text=True, timeout=300)
+    print(p.stdout, p.stderr, sep="\n")
+    if p.returncode != 0:
+        fail(f"plot exit status {p.returncode}")
+    print(f"plot took {time.time() - t0:.1f} s")
+    last = sorted(n for n in os.listdir(os.path.join(case_dir, "snapshots")) if n.endswith(".vtu"))[-1]
+    index = last.split("_")[-1].split(".")[0]
+    check_png(os.path.join(case_dir, "forces.png"))
+    for field in ("temperature", "plastic_strain", "damage"):
+        check_png(os.path.join(case_dir, f"chip_{field}_{index}.png"), min_colours=40)
+    check_png(os.path.join(case_dir, f"chip_{index}.png"), min_colours=40)
+    # A missing directory is a clear error, not a crash.
+    p = subprocess.run([binary, "plot", os.path.join(scratch, "no_such_dir")], capture_output=True, text=True)
+    if p.returncode == 0:
+        fail("plot of a missing directory exited 0")
+    print("PASS")
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 3:
+        print(__doc__)
+        sys.exit(2)
+    main(sys.argv[1], sys.argv[2])

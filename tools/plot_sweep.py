@@ -1,0 +1,170 @@
+"""Plots of an mpmcut sweep (speed x feed grid) from its sweep.csv.
+
+usage: /usr/bin/python3 plot_sweep.py SWEEP_DIR
+
+Writes into SWEEP_DIR (docs/results.md):
+  forces_vs_speed.png  mean cutting (solid) and thrust (dashed) force per unit width vs cutting speed, one colour per feed;
+  chip_vs_speed.png    segment pitch (µm) and segmentation degree vs cutting speed, one colour per feed
+                       (panels say so when the chip analysis gave no values);
+  chip_map.png         speed x feed map of the chip type, coloured cells with labels.
+Cases that did not complete are drawn as crosses at the bottom of the force plot and as grey cells.
+"""
+import os
+import sys
+
+import numpy as np
+
+import plot_style as ps
+from plot_style import plt
+
+from matplotlib.patches import Patch
+
+CHIP_COLORS = {
+    "continuous": "#4c9be8",
+    "serrated": "#f0a830",
+    "segmented": "#f0a830",
+    "discontinuous": "#d9534f",
+}
+
+
+def chip_color(label):
+    low = (label or "").lower()
+    for key, color in CHIP_COLORS.items():
+        if key in low:
+            return color
+    return "#d0d0d0" if not low else "#9b8ec4"
+
+
+def group_by_feed(rows):
+    feeds = sorted({ps.to_float(r["feed_mm"]) for r in rows if ps.to_float(r["feed_mm"]) is not None})
+    return feeds, {f: sorted([r for r in rows if ps.to_float(r["feed_mm"]) == f],
+                             key=lambda r: ps.to_float(r["speed_m_per_s"])) for f in feeds}
+
+
+def speed_axis(ax, speeds):
+    if len(speeds) and max(speeds) / max(min(speeds), 1e-12) > 8:
+        ax.set_xscale("log")
+        ax.set_xticks(speeds)
+        ax.set_xticklabels([f"{s:g}" for s in speeds])
+        ax.minorticks_off()
+    ax.set_xlabel("Cutting speed V (m/s)")
+    # A second axis in the machinist's m/min.
+    sec = ax.secondary_xaxis("top", functions=(lambda v: v * 60.0, lambda v: v / 60.0))
+    sec.set_xlabel("V (m/min)", fontsize=8)
+    sec.tick_params(labelsize=7)
+
+
+def plot_forces(d, rows, feeds, by_feed, speeds):
+    fig, ax = plt.subplots(figsize=(5.6, 3.8))
+    any_point = False
+    for k, f in enumerate(feeds):
+        color = ps.FEED_COLORS[k % len(ps.FEED_COLORS)]
+        ok = [r for r in by_feed[f] if r["status"] == "complete" and ps.to_float(r["mean_cutting_force_N_per_mm"]) is not None]
+        v = [ps.to_float(r["speed_m_per_s"]) for r in ok]
+        fc = [ps.to_float(r["mean_cutting_force_N_per_mm"]) for r in ok]
+        ft = [ps.to_float(r["mean_thrust_force_N_per_mm"]) for r in ok]
+        if v:
+            any_point = True
+            ax.plot(v, fc, "-o", color=color, lw=1.6, ms=4.5, label=f"$F_c$, h = {f:g} mm")
+            ax.plot(v, ft, "--s", color=color, lw=1.2, ms=4, mfc="white", label=f"$F_t$, h = {f:g} mm")
+        bad = [ps.to_float(r["speed_m_per_s"]) for r in by_feed[f] if r["status"] != "complete"]
+        if bad:
+            ax.plot(bad, [0] * len(bad), "x", color=color, ms=7, mew=1.5, label=f"not complete, h = {f:g} mm")
+    fallback = any("last half" in (r.get("force_window") or "") for r in rows)
+    speed_axis(ax, speeds)
+    ax.set_ylabel("Mean force per unit width (N/mm)")
+    ax.set_ylim(bottom=0)
+    ax.set_title("Cutting (solid) and thrust (dashed) force vs cutting speed", pad=24)
+    if any_point:
+        ax.legend(frameon=False, fontsize=7, ncol=2, loc="best")
+    else:
+        ax.text(0.5, 0.5, "no complete case with forces", transform=ax.transAxes, ha="center", color="0.4")
+    if fallback:
+        fig.text(0.01, -0.03, "Some means are over the last half of the cut: the run ended before its steady window "
+                 "(column force_window of sweep.csv).", fontsize=6.5, color="0.35", va="top")
+    ps.save(fig, os.path.join(d, "forces_vs_speed.png"))
+
+
+def plot_chip_metrics(d, rows, feeds, by_feed, speeds):
+    fig, axes = plt.subplots(1, 2, figsize=(9.0, 3.6), layout="constrained")
+    for ax, key, label in ((axes[0], "pitch_um", "Segment pitch (µm)"),
+                           (axes[1], "segmentation_degree", "Segmentation degree (–)")):
+        n = 0
+        for k, f in enumerate(feeds):
+            color = ps.FEED_COLORS[k % len(ps.FEED_COLORS)]
+            pts = [(ps.to_float(r["speed_m_per_s"]), ps.to_float(r.get(key))) for r in by_feed[f]]
+            pts = [(v, y) for v, y in pts if y is not None]
+            if pts:
+                n += len(pts)
+                ax.plot(*zip(*pts), "-o", color=color, lw=1.5, ms=4.5, label=f"h = {f:g} mm")
+        if len(speeds) == 1 or not n:
+            ax.set_xlim(min(speeds) * 0.8, max(speeds) * 1.2)
+        speed_axis(ax, speeds)
+        ax.set_ylabel(label)
+        if n:
+            ax.legend(frameon=False)
+            ax.set_ylim(bottom=0)
+        else:
+            analysed = any(r.get("chip_classification") for r in rows)
+            text = ("no values: no segments found\n(pitch is undefined for continuous chips)" if analysed else
+                    "not available:\nno chip analysis in the summaries\n(mpmcut analyze)")
+            ax.text(0.5, 0.5, text, transform=ax.transAxes, ha="center", va="center", color="0.4", fontsize=8)
+    fig.suptitle("Chip segmentation vs cutting speed")
+    ps.save(fig, os.path.join(d, "chip_vs_speed.png"))
+
+
+def plot_chip_map(d, rows, feeds, speeds):
+    fig, ax = plt.subplots(figsize=(max(4.0, 1.05 * len(speeds) + 1.6), max(2.2, 0.75 * len(feeds) + 1.3)))
+    used = {}
+    for r in rows:
+        v, f = ps.to_float(r["speed_m_per_s"]), ps.to_float(r["feed_mm"])
+        if v not in speeds or f not in feeds:
+            continue
+        i, j = speeds.index(v), feeds.index(f)
+        if r["status"] != "complete":
+            label, color = r["status"] or "failed", "#7f7f7f"
+        else:
+            label = r.get("chip_classification") or "n/a"
+            color = chip_color(r.get("chip_classification"))
+        used[label] = color
+        ax.add_patch(plt.Rectangle((i, j), 1, 1, facecolor=color, edgecolor="white", lw=2))
+        ax.text(i + 0.5, j + 0.5, label, ha="center", va="center", fontsize=7.5,
+                color="white" if color == "#7f7f7f" else "black", wrap=True)
+    ax.set_xlim(0, len(speeds))
+    ax.set_ylim(0, len(feeds))
+    ax.set_xticks(np.arange(len(speeds)) + 0.5)
+    ax.set_xticklabels([f"{v:g}\n({v * 60:g})" for v in speeds], fontsize=7.5)
+    ax.set_yticks(np.arange(len(feeds)) + 0.5)
+    ax.set_yticklabels([f"{f:g}" for f in feeds])
+    ax.set_xlabel("Cutting speed V, m/s (m/min)")
+    ax.set_ylabel("Uncut chip thickness h (mm)")
+    ax.tick_params(length=0, top=False, right=False)
+    ax.set_title("Chip type")
+    if "n/a" in used:
+        ax.text(0.0, -0.02, "n/a: no chip classification in summary.json (mpmcut analyze)", transform=fig.transFigure,
+                fontsize=6.5, color="0.35")
+    handles = [Patch(facecolor=c, label=l) for l, c in used.items()]
+    ax.legend(handles=handles, frameon=False, loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=7.5)
+    ps.save(fig, os.path.join(d, "chip_map.png"))
+
+
+def main(argv):
+    if len(argv) != 1:
+        print(__doc__, file=sys.stderr)
+        return 2
+    d = argv[0]
+    rows = ps.read_csv_rows(os.path.join(d, "sweep.csv"))
+    if not rows:
+        print("error: sweep.csv has no rows", file=sys.stderr)
+        return 1
+    ps.apply_style()
+    feeds, by_feed = group_by_feed(rows)
+    speeds = sorted({ps.to_float(r["speed_m_per_s"]) for r in rows})
+    plot_forces(d, rows, feeds, by_feed, speeds)
+    plot_chip_metrics(d, rows, feeds, by_feed, speeds)
+    plot_chip_map(d, rows, feeds, speeds)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
