@@ -206,6 +206,9 @@ void Simulation::push_particles_out_of_rigid_bodies(double dt) {
 
 // Frictional work found at contact nodes heats the particles there: node i's heat q_i goes to
 // particle p in proportion to S_ip m_p c_p, so that sum_p m_p c_p dT_p = sum_i q_i exactly.
+// The workpiece surface cannot be heated by friction beyond its melting temperature: a molten
+// film would carry no shear, so that part of the frictional heat is taken to flow into the tool
+// (it stays in the friction work, not in the workpiece's heat).
 void Simulation::deposit_frictional_heat() {
   Particles& P = particles_;
   const Grid& G = grid_;
@@ -213,6 +216,7 @@ void Simulation::deposit_frictional_heat() {
   if (friction_box_lo_.x() > friction_box_hi_.x()) return;  // no frictional heat this step
   // Only particles whose stencil can reach a heated node (2 cells around the heated box).
   const Vec2 lo = friction_box_lo_ - Vec2::Constant(2.0), hi = friction_box_hi_ + Vec2::Constant(2.0);
+  deposited_heat_.assign(n, 0.0);
 #pragma omp parallel for schedule(static)
   for (std::size_t p = 0; p < n; ++p) {
     const Vec2 u = cell_units(P.position[p]);
@@ -225,8 +229,12 @@ void Simulation::deposit_frictional_heat() {
         const int node = G.index(st.i0 + a, st.j0 + c);
         if (st.w[a][c] != 0.0 && G.friction_heat[node] > 0.0) dT += st.w[a][c] * G.friction_heat[node] / G.heat_capacity[node];
       }
+    const MaterialParameters& mat = scene_.materials[P.material[p]];
+    if (mat.melting_temperature > 0.0) dT = std::clamp(mat.melting_temperature - P.temperature[p], 0.0, dT);
     P.temperature[p] += dT;
+    deposited_heat_[p] = P.mass[p] * mat.specific_heat * dT;
   }
+  energy_.heat += deterministic_sum(n, [&](std::size_t p) { return deposited_heat_[p]; });
 }
 
 // Chips that break off and fly out of the domain are removed rather than stopping the run.
@@ -471,7 +479,7 @@ void Simulation::apply_rigid_contact(std::vector<Vec2>& v, double dt, ContactPas
       rigid_[r].work += work;
       energy_.external_work += work;
       energy_.friction += friction_work;
-      energy_.heat += friction_work;
+
     }
   }
 }

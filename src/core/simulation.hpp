@@ -129,6 +129,7 @@ class Simulation {
   std::vector<std::size_t> strip_order_;  // particle indices grouped by strip of grid rows
   std::vector<std::size_t> strip_begin_;  // strip s holds strip_order_[strip_begin_[s] .. strip_begin_[s+1])
   std::vector<ConstitutiveIncrement> increments_;
+  std::vector<double> deposited_heat_;  // frictional heat taken by each particle this step, J/m
   Particles particles_;
   std::vector<std::unique_ptr<Material>> materials_;
   std::vector<RigidBodyState> rigid_;

@@ -160,3 +160,30 @@ TEST(RigidContact, FrictionalWorkEqualsKineticEnergyLost) {
   EXPECT_NEAR(sim.total_momentum().x() / M, v0 - mu * g * sim.time(), 0.02 * v0);
   EXPECT_NEAR(e.heat, e.friction, 1e-12 * e.friction);  // frictional work becomes heat
 }
+
+// Frictional heating cannot take the surface beyond the melting temperature (a molten film
+// carries no shear); the excess counts as heat flowing into the rigid body.
+TEST(RigidContact, FrictionalHeatingStopsAtMelting) {
+  const double h = 0.02, g = 10.0, mu = 0.3, v0 = 2.0;
+  Scene s;
+  s.grid = {h, Vec2(0, 0), Vec2(2.0, 0.4)};
+  s.body_force = Vec2(0.0, -g);
+  MaterialParameters m = mpmcut::testing::elastic_material("rubber", 1e6, 0.3, 1000.0);
+  m.specific_heat = 0.01;          // tiny heat capacity: friction alone would heat it by kelvins
+  m.room_temperature = 298.0;
+  m.melting_temperature = 300.0;
+  s.materials.push_back(m);
+  BodySpec b = mpmcut::testing::rectangle_body("block", "rubber", Vec2(0.1, 0.1), Vec2(0.3, 0.2), 2, Vec2(v0, 0));
+  b.temperature = 298.0;
+  s.bodies.push_back(b);
+  RigidBodySpec plane;
+  plane.name = "plane";
+  plane.polygon = box(Vec2(-0.1, -0.1), Vec2(2.1, 0.1));
+  plane.friction = mu;
+  s.rigid_bodies.push_back(plane);
+  Simulation sim(s);
+  while (sim.time() < 0.3) sim.step();
+  EXPECT_LE(sim.max_temperature(), 300.0);
+  EXPECT_GT(sim.max_temperature(), 299.9);  // it did heat up to the cap
+  EXPECT_LT(sim.energy().heat, 0.5 * sim.energy().friction);
+}
