@@ -472,6 +472,13 @@ Scene load_scene(const std::filesystem::path& file, const std::vector<std::strin
   return parse_scene(text.str(), file.string(), overrides);
 }
 
+Scene default_cutting_scene(const std::vector<std::string>& overrides) {
+  for (const EmbeddedText& file : embedded_texts())
+    if (file.path == "cases/ti64_default.toml")
+      return parse_scene(file.text, "built-in " + std::string(file.path), overrides);
+  throw InputError("the built-in default case is missing from this build");
+}
+
 Scene default_elastic_demo_scene(const std::vector<std::string>& overrides) {
   for (const EmbeddedText& file : embedded_texts())
     if (file.path == "cases/elastic_demo.toml")

@@ -25,4 +25,8 @@ Scene parse_scene(std::string_view toml_text, const std::string& source_name,
 // takes --set overrides like a case file.
 Scene default_elastic_demo_scene(const std::vector<std::string>& overrides = {});
 
+// The default run of `mpmcut run` without a case file (cases/ti64_default.toml, compiled in):
+// Ti-6Al-4V at 20 m/s, uncut chip thickness 0.1 mm.
+Scene default_cutting_scene(const std::vector<std::string>& overrides = {});
+
 }  // namespace mpmcut

@@ -1,0 +1,374 @@
+#include "analysis/chip_analysis.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+
+#include <Eigen/Eigenvalues>
+#include <fmt/core.h>
+#include <nlohmann/json.hpp>
+
+#include "analysis/chip_pieces.hpp"
+
+namespace mpmcut {
+
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+// The rake-face frame: origin where the (grown) rake face meets the machined surface, u along
+// the rake face away from the edge, n its normal into the chip. For a 0 deg rake, u = +y, n = -x.
+struct RakeFrame {
+  Vec2 origin, u, n;
+  Vec2 local(const Vec2& x) const { return Vec2((x - origin).dot(u), (x - origin).dot(n)); }
+};
+
+RakeFrame rake_frame(const ChipAnalysisSetup& s) {
+  const double a = s.rake_angle_deg * kDeg;
+  RakeFrame f;
+  f.u = Vec2(std::sin(a), std::cos(a));   // as tool_geometry.cpp builds the rake face
+  f.n = Vec2(-std::cos(a), std::sin(a));  // outward normal of the rake face, towards the chip
+  // The cutting edge: the lowest vertex of the tool's core polygon (leftmost on a tie); the
+  // grown rake face is the core's rake line moved r along n.
+  const std::vector<Vec2>& v = s.tool.vertices();
+  Vec2 edge = v.at(0);
+  for (const Vec2& p : v)
+    if (p.y() < edge.y() || (p.y() == edge.y() && p.x() < edge.x())) edge = p;
+  const Vec2 on_face = edge + s.tool.rounding_radius() * f.n;
+  const double along = (s.machined_surface_y_m - on_face.y()) / f.u.y();
+  f.origin = on_face + along * f.u;
+  return f;
+}
+
+bool fully_damaged(const Particles& p, std::size_t i, const ChipAnalysisSetup& s) {
+  const auto m = static_cast<std::size_t>(p.material[i]);
+  if (m >= s.max_damage.size()) return false;
+  return p.damage[i] >= s.max_damage[m] - 1e-12;
+}
+
+// Angle of a band direction from the cutting direction, degrees in [0, 180): the band is oriented
+// upwards and measured from -x (the direction from the cutting edge towards the uncut material),
+// so a primary shear plane from the edge up to the free surface ahead of the tool has angle phi.
+double band_angle_deg(Vec2 d) {
+  if (d.y() < 0.0 || (d.y() == 0.0 && d.x() > 0.0)) d = -d;
+  return std::atan2(d.y(), -d.x()) / kDeg;
+}
+
+void peak_in(PeakTemperature& peak, const Particles& p, std::size_t i) {
+  ++peak.particles;
+  if (!peak.max_K || p.temperature[i] > *peak.max_K) {
+    peak.max_K = p.temperature[i];
+    peak.position_m = p.position[i];
+  }
+}
+
+}  // namespace
+
+ChipAnalysisSetup chip_analysis_setup(const Scene& scene, const Vec2& tool_displacement_m, double time_s) {
+  if (!scene.cutting)
+    throw std::invalid_argument(fmt::format(
+        "scene '{}' is not a cutting scene (no [cutting_process] record): the chip analysis needs the cut's "
+        "parameters", scene.title));
+  if (scene.rigid_bodies.empty() || scene.bodies.empty())
+    throw std::invalid_argument("chip analysis: a cutting scene needs the workpiece (body 0) and the tool (rigid body 0)");
+  const CuttingParameters& c = *scene.cutting;
+  ChipAnalysisSetup s;
+  s.uncut_chip_thickness_m = c.uncut_chip_thickness;
+  s.cutting_speed_m_per_s = c.cutting_speed;
+  s.rake_angle_deg = c.rake_angle_deg;
+  s.cell_size_m = scene.grid.cell_size;
+  s.particles_per_cell = scene.bodies[0].particles_per_cell;
+  const RigidBodySpec& tool = scene.rigid_bodies[0];
+  Polygon moved = tool.polygon;
+  for (Vec2& v : moved.vertices) v += tool_displacement_m;
+  s.tool = RigidPolygon(moved, tool.rounding_radius);
+  s.tool_velocity_m_per_s = tool.velocity;
+  // The preset puts the tool's lowest point on the machined surface (tool_geometry.hpp).
+  double core_min_y = std::numeric_limits<double>::infinity();
+  for (const Vec2& v : moved.vertices) core_min_y = std::min(core_min_y, v.y());
+  s.machined_surface_y_m = core_min_y - tool.rounding_radius;
+  // Without damage no particle can fail: a threshold above any D.
+  for (const MaterialParameters& m : scene.materials) s.max_damage.push_back(m.damage_enabled ? m.max_damage : 2.0);
+  s.workpiece_body = 0;
+  s.time_s = time_s;
+  s.tool_travel_m = -tool_displacement_m.x();
+  return s;
+}
+
+double shear_angle_from_chip_ratio_deg(double r, double rake_angle_deg) {
+  const double a = rake_angle_deg * kDeg;
+  return std::atan2(r * std::cos(a), 1.0 - r * std::sin(a)) / kDeg;
+}
+
+std::vector<char> chip_particles(const Particles& p, const ChipAnalysisSetup& s) {
+  const ChipThresholds& th = s.thresholds;
+  const double d = s.particle_spacing_m();
+  const double y_min = s.machined_surface_y_m + th.surface_margin_spacings * d;
+  // Above the uncut surface by half a particle spacing: a particle there has moved (the top row of
+  // the workpiece starts d/2 below the surface).
+  const double y_moved = s.machined_surface_y_m + s.uncut_chip_thickness_m + 0.5 * d;
+  std::vector<char> chip(p.size(), 0);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.body[i] != s.workpiece_body) continue;
+    const double y = p.position[i].y();
+    chip[i] = y > y_min && (p.plastic_strain[i] > th.chip_plastic_strain || y > y_moved);
+  }
+  return chip;
+}
+
+ChipAnalysis analyze_chip(const Particles& p, const ChipAnalysisSetup& s) {
+  const ChipThresholds& th = s.thresholds;
+  const double t0 = s.uncut_chip_thickness_m, h = s.cell_size_m, d = s.particle_spacing_m();
+  if (!(t0 > 0.0) || !(h > 0.0) || s.particles_per_cell < 1)
+    throw std::invalid_argument(fmt::format(
+        "analyze_chip: need t0 > 0, h > 0 and particles_per_cell >= 1, got {}, {}, {}", t0, h, s.particles_per_cell));
+  const RakeFrame frame = rake_frame(s);
+  const double cos_a = std::cos(s.rake_angle_deg * kDeg);
+
+  ChipAnalysis a;
+  a.time_s = s.time_s;
+  a.tool_travel_m = s.tool_travel_m;
+
+  // --- The chip and its pieces -------------------------------------------------------------
+  const std::vector<char> is_chip = chip_particles(p, s);
+  std::vector<std::size_t> chip;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (is_chip[i]) chip.push_back(i);
+  a.chip_particles = chip.size();
+  std::vector<Vec2> x(chip.size()), local(chip.size());
+  std::vector<char> bonds(chip.size());
+  for (std::size_t k = 0; k < chip.size(); ++k) {
+    const std::size_t i = chip[k];
+    a.chip_mass_kg_per_m += p.mass[i];
+    x[k] = p.position[i];
+    local[k] = frame.local(p.position[i]);
+    bonds[k] = !fully_damaged(p, i, s);
+  }
+  const Pieces pieces = find_pieces(x, th.link_spacings * d, bonds);
+  a.significant_piece_particles = std::max<std::size_t>(
+      th.min_piece_particles,
+      static_cast<std::size_t>(std::ceil(th.significant_piece_t0_squared * (t0 / d) * (t0 / d))));
+  for (std::size_t size : pieces.size) {
+    if (size >= a.significant_piece_particles) {
+      a.piece_particles.push_back(size);
+    } else {
+      a.fragment_particles += size;
+    }
+  }
+  a.pieces = a.piece_particles.size();
+
+  // --- Profile and segmentation --------------------------------------------------------------
+  // From half an uncut chip thickness above the uncut surface's height on the rake face: below it
+  // lies the chip root, where the chip is still being formed (the primary shear zone, the bend of
+  // the free surface) and has no thickness of its own.
+  a.prominence_m = std::max(th.prominence_t0 * t0, th.prominence_spacings * d);
+  {
+    const double s0 = th.profile_start_t0 * t0 / cos_a;
+    a.profile = trace_chip_profile(x, frame.origin + s0 * frame.u, frame.u, frame.n, 0.5 * h, d,
+                                   th.max_chip_thickness_t0 * t0, t0);
+    a.profile.start_m = s0;
+  }
+  a.segmentation = measure_segmentation(a.profile, a.prominence_m);
+  if (a.segmentation.mean_thickness_m) {
+    const double r = t0 / *a.segmentation.mean_thickness_m;
+    a.chip_thickness_ratio = r;
+    a.shear_angle_from_ratio_deg = shear_angle_from_chip_ratio_deg(r, s.rake_angle_deg);
+    a.chip_velocity_m_per_s = s.cutting_speed_m_per_s * r;
+    if (a.segmentation.pitch_m) a.segmentation_frequency_Hz = *a.chip_velocity_m_per_s / *a.segmentation.pitch_m;
+  }
+  {
+    double mass = 0.0, momentum = 0.0;
+    for (std::size_t k = 0; k < chip.size(); ++k) {
+      // The chip just above the root, still on the rake face.
+      if (local[k].x() < a.profile.start_m || local[k].x() > a.profile.start_m + 2.0 * t0) continue;
+      if (local[k].y() < 0.0 || local[k].y() > th.max_chip_thickness_t0 * t0) continue;
+      const std::size_t i = chip[k];
+      mass += p.mass[i];
+      momentum += p.mass[i] * (p.velocity[i] - s.tool_velocity_m_per_s).dot(frame.u);
+    }
+    if (mass > 0.0) a.chip_velocity_from_particles_m_per_s = momentum / mass;
+  }
+
+  // --- Classification ------------------------------------------------------------------------
+  if (a.chip_particles < a.significant_piece_particles) {
+    a.classification = "none";
+  } else if (a.pieces >= 2) {
+    a.classification = "discontinuous";
+  } else if (a.segmentation.degree && *a.segmentation.degree >= th.serrated_degree &&
+             a.segmentation.segments >= th.serrated_min_segments) {
+    a.classification = "serrated";
+  } else {
+    a.classification = "continuous";
+  }
+
+  // --- Shear bands ---------------------------------------------------------------------------
+  if (!chip.empty()) {
+    std::vector<double> strain(chip.size());
+    for (std::size_t k = 0; k < chip.size(); ++k) strain[k] = p.plastic_strain[chip[k]];
+    std::vector<double> sorted = strain;
+    std::sort(sorted.begin(), sorted.end());
+    const auto quantile = [&sorted](double q) {
+      return sorted[static_cast<std::size_t>(std::floor(q * static_cast<double>(sorted.size() - 1)))];
+    };
+    const double threshold = std::max(quantile(th.band_strain_percentile), th.band_strain_over_median * quantile(0.5));
+    a.band_strain_threshold = threshold;
+    std::vector<Vec2> band;
+    Vec2 normal;
+    for (std::size_t k = 0; k < chip.size(); ++k) {
+      if (strain[k] <= threshold) continue;
+      if (s.tool.signed_distance(x[k], normal) < th.band_tool_distance_cells * h) continue;
+      band.push_back(x[k]);
+    }
+    const Pieces clusters = find_pieces(band, th.link_spacings * d);
+    const std::size_t min_band = std::max<std::size_t>(3, static_cast<std::size_t>(std::ceil(th.band_min_length_t0 * t0 / d)));
+    for (std::size_t c = 0; c < clusters.size.size() && clusters.size[c] >= min_band; ++c) {
+      Vec2 mean = Vec2::Zero();
+      std::size_t n = 0;
+      for (std::size_t k = 0; k < band.size(); ++k)
+        if (clusters.label[k] == static_cast<int>(c)) {
+          mean += band[k];
+          ++n;
+        }
+      mean /= static_cast<double>(n);
+      Mat2 cov = Mat2::Zero();
+      for (std::size_t k = 0; k < band.size(); ++k)
+        if (clusters.label[k] == static_cast<int>(c)) cov += (band[k] - mean) * (band[k] - mean).transpose();
+      const Eigen::SelfAdjointEigenSolver<Mat2> eig(cov);
+      const double small = std::max(eig.eigenvalues()(0), 0.0), large = eig.eigenvalues()(1);
+      // A line of particles one spacing wide has a minor variance of about d^2/12, never zero.
+      if (large < th.band_min_elongation * th.band_min_elongation * std::max(small, d * d / 12.0)) continue;
+      const Vec2 axis = eig.eigenvectors().col(1);
+      // Unroll a curled chip: express the band in the chip's local frame (tangent, normal) at the
+      // nearest profile station and map that frame onto the rake face's (u, n), where the band
+      // was formed. Near the root, in contact with the rake face, this changes nothing.
+      Vec2 tangent = frame.u, normal = frame.n;
+      double nearest = std::numeric_limits<double>::infinity();
+      for (std::size_t k = 0; k < a.profile.inner_m.size(); ++k) {
+        const double dist = (a.profile.inner_m[k] - mean).squaredNorm();
+        if (dist < nearest) {
+          nearest = dist;
+          tangent = a.profile.tangent[k];
+        }
+      }
+      normal = Vec2(-tangent.y(), tangent.x());
+      if (normal.dot(frame.n) < 0.0 && tangent.dot(frame.u) > 0.0) normal = -normal;
+      if (nearest == std::numeric_limits<double>::infinity()) normal = frame.n;
+      const double along = axis.dot(tangent), across = axis.dot(normal);
+      // A cluster that runs along the chip is the secondary shear zone on its inner surface, not a band.
+      if (std::abs(across) < std::sin(th.band_min_angle_to_chip_deg * kDeg)) continue;
+      a.shear_band_angles_deg.push_back(band_angle_deg(along * frame.u + across * frame.n));
+    }
+    if (!a.shear_band_angles_deg.empty()) {
+      double sum = 0.0;
+      for (double angle : a.shear_band_angles_deg) sum += angle;
+      a.shear_band_angle_deg = sum / static_cast<double>(a.shear_band_angles_deg.size());
+    }
+  }
+
+  // --- Temperatures ---------------------------------------------------------------------------
+  const double s_top = t0 / cos_a + th.shear_zone_overshoot_t0 * t0;
+  const double interface = th.interface_distance_cells * h;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (!a.max_temperature_K || p.temperature[i] > *a.max_temperature_K) a.max_temperature_K = p.temperature[i];
+    if (p.body[i] != s.workpiece_body) continue;
+    Vec2 normal;
+    const double distance = s.tool.signed_distance(p.position[i], normal);
+    // Rake face and the front of the edge: the tool's outward normal there points against the cut.
+    if (distance <= interface && normal.x() <= 0.0) peak_in(a.tool_chip_interface, p, i);
+    const Vec2 q = frame.local(p.position[i]);
+    if (q.x() > 0.0 && q.x() <= s_top && q.y() > interface && q.y() <= th.shear_zone_depth_t0 * t0)
+      peak_in(a.primary_shear_zone, p, i);
+  }
+  return a;
+}
+
+namespace {
+
+nlohmann::json optional_json(const std::optional<double>& v) {
+  return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
+}
+
+nlohmann::json peak_json(const PeakTemperature& t) {
+  nlohmann::json j;
+  j["max_K"] = optional_json(t.max_K);
+  j["position_m"] = t.position_m ? nlohmann::json{t.position_m->x(), t.position_m->y()} : nlohmann::json(nullptr);
+  j["particles"] = t.particles;
+  return j;
+}
+
+}  // namespace
+
+nlohmann::json chip_json(const ChipAnalysis& a) {
+  const Segmentation& g = a.segmentation;
+  nlohmann::json j;
+  j["time_s"] = a.time_s;
+  j["tool_travel_m"] = a.tool_travel_m;
+  j["classification"] = a.classification;
+  j["particles"] = a.chip_particles;
+  j["mass_kg_per_m"] = a.chip_mass_kg_per_m;
+  j["pieces"] = a.pieces;
+  j["piece_particles"] = a.piece_particles;
+  j["fragment_particles"] = a.fragment_particles;
+  j["segments"] = g.segments;
+  j["peak_height_m"] = optional_json(g.peak_height_m);
+  j["valley_height_m"] = optional_json(g.valley_height_m);
+  j["mean_thickness_m"] = optional_json(g.mean_thickness_m);
+  j["max_thickness_m"] = optional_json(g.max_thickness_m);
+  j["segmentation_degree"] = optional_json(g.degree);
+  j["pitch_m"] = optional_json(g.pitch_m);
+  j["segmentation_frequency_Hz"] = optional_json(a.segmentation_frequency_Hz);
+  j["chip_thickness_ratio"] = optional_json(a.chip_thickness_ratio);
+  j["shear_angle_from_ratio_deg"] = optional_json(a.shear_angle_from_ratio_deg);
+  j["chip_velocity_m_per_s"] = optional_json(a.chip_velocity_m_per_s);
+  j["chip_velocity_from_particles_m_per_s"] = optional_json(a.chip_velocity_from_particles_m_per_s);
+  j["shear_band_angle_deg"] = optional_json(a.shear_band_angle_deg);
+  j["shear_band_angles_deg"] = a.shear_band_angles_deg;
+  j["profile"] = {{"start_m", a.profile.start_m},
+                  {"spacing_m", a.profile.spacing_m},
+                  {"samples", a.profile.thickness_m.size()},
+                  {"peak_positions_m", nlohmann::json::array()},
+                  {"valley_positions_m", nlohmann::json::array()}};
+  for (std::size_t k : g.extrema.peaks) j["profile"]["peak_positions_m"].push_back(a.profile.position_m(k));
+  for (std::size_t k : g.extrema.valleys) j["profile"]["valley_positions_m"].push_back(a.profile.position_m(k));
+  j["thresholds"] = {{"prominence_m", a.prominence_m},
+                     {"significant_piece_particles", a.significant_piece_particles},
+                     {"band_plastic_strain", optional_json(a.band_strain_threshold)}};
+  j["definition"] = "docs/analysis.md";
+  return j;
+}
+
+nlohmann::json temperature_json(const ChipAnalysis& a) {
+  return {{"time_s", a.time_s},
+          {"max_K", optional_json(a.max_temperature_K)},
+          {"primary_shear_zone", peak_json(a.primary_shear_zone)},
+          {"tool_chip_interface", peak_json(a.tool_chip_interface)},
+          {"definition", "docs/analysis.md"}};
+}
+
+std::string chip_summary_text(const ChipAnalysis& a) {
+  const auto um = [](const std::optional<double>& v) { return v ? fmt::format("{:.1f} um", *v * 1e6) : std::string("-"); };
+  const auto num = [](const std::optional<double>& v, const char* f) {
+    return v ? fmt::format(fmt::runtime(f), *v) : std::string("-");
+  };
+  const Segmentation& g = a.segmentation;
+  std::string s = fmt::format("chip at t = {:.4g} s (tool travel {:.1f} um): {}, {} particles, {} piece(s)\n", a.time_s,
+                              a.tool_travel_m * 1e6, a.classification, a.chip_particles, a.pieces);
+  s += fmt::format("  thickness: mean {}, peaks {}, valleys {}; segmentation degree Gs {}; {} segment(s), pitch {}\n",
+                   um(g.mean_thickness_m), um(g.peak_height_m), um(g.valley_height_m), num(g.degree, "{:.2f}"),
+                   g.segments, um(g.pitch_m));
+  s += fmt::format("  chip thickness ratio r {}, shear angle from r {} deg, shear-band angle {} deg ({} band(s))\n",
+                   num(a.chip_thickness_ratio, "{:.2f}"), num(a.shear_angle_from_ratio_deg, "{:.1f}"),
+                   num(a.shear_band_angle_deg, "{:.1f}"), a.shear_band_angles_deg.size());
+  s += fmt::format("  chip velocity {} m/s (continuity), {} m/s (particles); segmentation frequency {}\n",
+                   num(a.chip_velocity_m_per_s, "{:.2f}"), num(a.chip_velocity_from_particles_m_per_s, "{:.2f}"),
+                   a.segmentation_frequency_Hz ? fmt::format("{:.3g} MHz", *a.segmentation_frequency_Hz * 1e-6)
+                                               : std::string("-"));
+  s += fmt::format("  temperature: max {} K, primary shear zone {} K, tool-chip interface {} K\n",
+                   num(a.max_temperature_K, "{:.0f}"), num(a.primary_shear_zone.max_K, "{:.0f}"),
+                   num(a.tool_chip_interface.max_K, "{:.0f}"));
+  return s;
+}
+
+}  // namespace mpmcut

@@ -1,0 +1,70 @@
+#pragma once
+// The chip's free-surface profile and its segmentation (saw-tooth) metrics.
+//
+// The profile is the chip's local thickness as a function of the distance along the chip: the
+// distance from the chip's inner surface (on the rake face while it is in contact) to its outer,
+// free surface, measured normal to the inner surface at stations a fixed arc length apart along it
+// (trace_chip_profile). Peaks and valleys of this line give the segmentation degree
+// Gs = (H - h)/H (H: mean peak height, h: mean valley height) and the pitch (mean peak spacing),
+// as in the experimental literature on serrated Ti-6Al-4V chips. docs/analysis.md has the details.
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "core/tensor.hpp"
+
+namespace mpmcut {
+
+struct ChipProfile {
+  double start_m = 0.0;              // arc length of the first sample, m (from the cutting edge)
+  double spacing_m = 0.0;            // between samples, m
+  std::vector<double> thickness_m;   // per sample; 0 where no particle lies in the window (a gap)
+  std::vector<Vec2> inner_m;         // per sample: the point on the chip's inner surface, m
+  std::vector<Vec2> tangent;         // per sample: unit direction of the chip there (along the walk)
+  double position_m(std::size_t k) const { return start_m + spacing_m * static_cast<double>(k); }
+};
+
+// Walks along the chip and measures its thickness every `step` of arc length along its inner
+// surface, so that a chip that curls away from the tool is measured across, not in projection.
+// Start: `start` on the inner surface (the rake face at the height of the uncut surface), heading
+// `direction` (along the rake face, away from the edge), `into_chip` the unit normal towards the
+// chip's free side. At each station the inner surface is fitted by a straight line through the
+// innermost point of each particle-spacing bin within +-smoothing_length/2 along the chip; the
+// station moves onto that line and the walk turns to its direction. The cross-section along the
+// line's normal is the run of point offsets (points within one particle spacing of the normal,
+// at most max_thickness away) without a gap wider than 2.5 particle spacings that lies nearest the
+// station, and thickness = its length + particle_spacing (each particle stands for a square of
+// that side). The next station is one step on from the cross-section's inner end. Slabs without
+// points give thickness 0 (a gap); three in a row, or coming back to particles measured earlier
+// (a walk circling past the chip's end), end the walk.
+ChipProfile trace_chip_profile(const std::vector<Vec2>& points, const Vec2& start, const Vec2& direction,
+                               const Vec2& into_chip, double step, double particle_spacing, double max_thickness,
+                               double smoothing_length);
+
+// Peaks and valleys in alternation, found by hysteresis ("zig-zag"): a running maximum becomes a
+// peak once the line has fallen `prominence` below it, a running minimum a valley once the line
+// has risen `prominence` above it. Every reported extremum therefore differs from the extrema
+// beside it by at least `prominence`, so a bump of one particle does not count. The first and last
+// samples never count: the profile is cut there, they are not turning points.
+struct ProfileExtrema {
+  std::vector<std::size_t> peaks;    // sample indices, increasing
+  std::vector<std::size_t> valleys;  // sample indices, increasing
+};
+ProfileExtrema find_profile_extrema(const std::vector<double>& y, double prominence);
+
+struct Segmentation {
+  ProfileExtrema extrema;
+  std::size_t segments = 0;                // number of peaks; 0 without a peak and valley pair
+  std::optional<double> peak_height_m;     // H: mean thickness at the peaks
+  std::optional<double> valley_height_m;   // h: mean thickness at the valleys
+  std::optional<double> mean_thickness_m;  // mean over the samples that hold chip material
+  std::optional<double> max_thickness_m;
+  // Gs = (H - h)/H; 0 when the profile has no peak and valley pair (no thickness variation
+  // beyond the prominence): such a chip is not segmented at this resolution.
+  std::optional<double> degree;
+  std::optional<double> pitch_m;           // mean distance between consecutive peaks (>= 2 peaks)
+};
+// Empty profile: every optional empty.
+Segmentation measure_segmentation(const ChipProfile& profile, double prominence);
+
+}  // namespace mpmcut

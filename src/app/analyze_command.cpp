@@ -1,0 +1,127 @@
+#include "app/analyze_command.hpp"
+
+#include <algorithm>
+#include <iostream>
+#include <stdexcept>
+#include <vector>
+
+#include <fmt/core.h>
+#include <nlohmann/json.hpp>
+
+#include "analysis/chip_analysis.hpp"
+#include "app/run_case.hpp"
+#include "io/input_error.hpp"
+#include "io/json_summary.hpp"
+#include "io/pvd_writer.hpp"
+#include "io/scene_parser.hpp"
+#include "io/vtu_reader.hpp"
+
+namespace mpmcut {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A user-facing problem with the arguments or the directory: message, exit code 2.
+struct AnalyzeError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// The snapshot files of a run in time order: from particles.pvd, which lists exactly the
+// snapshots that were completed.
+std::vector<PvdSeries::Entry> snapshots_of(const fs::path& dir) {
+  const fs::path index = dir / "particles.pvd";
+  if (!fs::exists(index))
+    throw AnalyzeError(fmt::format("'{}' has no particles.pvd: the run wrote no snapshots (output.vtu = false?)",
+                                   dir.string()));
+  std::vector<PvdSeries::Entry> entries = PvdSeries::read(index).entries();
+  if (entries.empty()) throw AnalyzeError(fmt::format("'{}' lists no snapshots", index.string()));
+  return entries;
+}
+
+// `choice` is "last" or the snapshot number N of snapshots/particles_N.vtu (0 = first).
+PvdSeries::Entry pick_snapshot(const std::vector<PvdSeries::Entry>& entries, const std::string& choice) {
+  if (choice == "last") return entries.back();
+  long n = -1;
+  try {
+    std::size_t used = 0;
+    n = std::stol(choice, &used);
+    if (used != choice.size()) n = -1;
+  } catch (const std::exception&) {
+    n = -1;
+  }
+  if (n < 0) throw AnalyzeError(fmt::format("--snapshot '{}': expected a snapshot number (0, 1, ...) or 'last'", choice));
+  const std::string name = fmt::format("particles_{:06d}.vtu", n);
+  for (const PvdSeries::Entry& e : entries)
+    if (fs::path(e.file).filename() == name) return e;
+  throw AnalyzeError(fmt::format("--snapshot {}: no such snapshot; this run has {} (particles_{:06d}.vtu to {})", n,
+                                 entries.size(), 0, fs::path(entries.back().file).filename().string()));
+}
+
+int analyze(const fs::path& dir, const std::string& snapshot) {
+  if (!fs::is_directory(dir)) throw AnalyzeError(fmt::format("result directory '{}' does not exist", dir.string()));
+  const fs::path summary_file = dir / "summary.json", scene_file = dir / "scene.toml";
+  if (!fs::exists(summary_file) || !fs::exists(scene_file))
+    throw AnalyzeError(fmt::format("'{}' is not a result directory of mpmcut run (no summary.json and scene.toml)",
+                                   dir.string()));
+  Scene scene;
+  try {
+    scene = load_scene(scene_file);
+  } catch (const InputError& e) {
+    throw AnalyzeError(fmt::format("cannot read the run's scene: {}", e.what()));
+  }
+  if (!scene.cutting)
+    throw AnalyzeError(fmt::format("'{}' is not a cutting run (its scene.toml has no [cutting_process] record): "
+                                   "the chip analysis needs the cut's parameters",
+                                   dir.string()));
+  nlohmann::json summary = read_json(summary_file);
+
+  const PvdSeries::Entry entry = pick_snapshot(snapshots_of(dir), snapshot);
+  const fs::path vtu = dir / entry.file;
+  const VtuSnapshot snap = read_particles_vtu(vtu);
+  // The tool moves at its prescribed velocity from t = 0 (cutting_scene.cpp).
+  const Vec2 displacement = scene.rigid_bodies.at(0).velocity * snap.time_s;
+  const ChipAnalysis a = analyze_chip(snap.particles, chip_analysis_setup(scene, displacement, snap.time_s));
+
+  std::cout << fmt::format("{} ({})\n", dir.string(), entry.file) << chip_summary_text(a);
+  nlohmann::json chip = chip_json(a), temperature = temperature_json(a);
+  chip["source"] = entry.file;
+  temperature["source"] = entry.file;
+  summary["chip"] = chip;
+  summary["temperature"] = temperature;
+  write_json_atomically(summary_file, summary);
+  std::cout << fmt::format("results merged into {} (\"chip\", \"temperature\")\n", summary_file.string());
+  return kExitComplete;
+}
+
+}  // namespace
+
+int analyze_result_directory(const fs::path& dir, const std::string& snapshot) {
+  try {
+    return analyze(dir, snapshot);
+  } catch (const AnalyzeError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return kExitInputError;
+  } catch (const std::exception& e) {
+    // Unreadable snapshot or summary, unwritable directory: the messages name the file.
+    std::cerr << "error: " << e.what() << "\n";
+    return kExitInputError;
+  }
+}
+
+void add_analyze_command(CLI::App& app) {
+  struct Options {
+    std::string dir;
+    std::string snapshot = "last";
+  };
+  auto options = std::make_shared<Options>();
+  CLI::App* cmd = app.add_subcommand(
+      "analyze", "Chip analysis of a cutting run's snapshot (morphology, segmentation, shear angle, temperatures); "
+                 "merges the results into its summary.json");
+  cmd->add_option("result_dir", options->dir, "Result directory of a cutting run")->required();
+  cmd->add_option("--snapshot", options->snapshot, "Snapshot number N (snapshots/particles_N.vtu) or 'last'")
+      ->capture_default_str();
+  cmd->callback([options] { throw CLI::RuntimeError(analyze_result_directory(options->dir, options->snapshot)); });
+}
+
+}  // namespace mpmcut

@@ -1,0 +1,33 @@
+#pragma once
+// Reads the particle snapshots that write_particles_vtu() wrote back into Particles, so that the
+// analysis (analysis/chip_analysis.hpp, `mpmcut analyze`) also works on finished or old runs.
+//
+// This is a reader for OUR files, not a general VTK reader: it expects the layout of
+// io/vtu_writer.cpp (UnstructuredGrid, LittleEndian, header_type UInt64, one raw <AppendedData>
+// block, the arrays of vtu_point_fields()). Anything else (another writer, compression, base64,
+// a truncated or corrupt file, a missing array) is a std::runtime_error naming the file and
+// what was wrong.
+//
+// What comes back, per Particles array:
+//   position <- Points (x, y; z dropped)          velocity <- velocity_m_per_s (x, y)
+//   stress, effective_stress <- xx yy zz xy        mass, volume, plastic_strain, plastic_strain_rate,
+//   velocity_gradient <- the in-plane 2x2 of L     temperature, damage_initiation, damage,
+//   body, material <- body_id, material_id          plastic_displacement <- their arrays
+// all bit-exact. Not stored in the file, so reconstructed:
+//   deformation_gradient = sqrt(J) I (only J = det F is stored; det F round-trips, F itself does not)
+//   initial_volume = volume / J;  initiation_yield_stress = 0.
+// Derived arrays (von_mises_stress_Pa, pressure_Pa, density_kg_per_m3) are not read.
+#include <filesystem>
+
+#include "core/particles.hpp"
+
+namespace mpmcut {
+
+struct VtuSnapshot {
+  Particles particles;
+  double time_s = 0.0;  // FieldData TimeValue
+};
+
+VtuSnapshot read_particles_vtu(const std::filesystem::path& file);
+
+}  // namespace mpmcut

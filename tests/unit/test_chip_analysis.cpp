@@ -1,0 +1,160 @@
+// Chip analysis on synthetic particle sets with known answers: which particles are the chip,
+// classification (continuous / serrated / discontinuous), chip thickness ratio and the shear angle
+// it implies (Merchant's geometry, algorithms.md §7.10), temperatures by region (docs/analysis.md).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <numbers>
+
+#include <nlohmann/json.hpp>
+
+#include "analysis/chip_analysis.hpp"
+#include "app/analyze_command.hpp"
+
+namespace mpmcut {
+namespace {
+
+constexpr double kT0 = 100e-6, kH = 10e-6, kD = 5e-6;  // t0, cell, particle spacing (2 per cell)
+
+// A 0 deg rake tool whose edge (sharp) sits at the origin, its rake face on x = 0, its body at x > 0;
+// the machined surface is y = 0, the uncut surface y = t0.
+ChipAnalysisSetup synthetic_setup() {
+  ChipAnalysisSetup s;
+  s.uncut_chip_thickness_m = kT0;
+  s.cutting_speed_m_per_s = 20.0;
+  s.rake_angle_deg = 0.0;
+  s.cell_size_m = kH;
+  s.particles_per_cell = 2;
+  s.machined_surface_y_m = 0.0;
+  s.tool_velocity_m_per_s = Vec2(-20.0, 0.0);
+  s.tool = RigidPolygon(Polygon{{Vec2(0, 0), Vec2(300e-6, 30e-6), Vec2(300e-6, 1e-3), Vec2(0, 1e-3)}}, 0.0);
+  s.max_damage = {0.999};
+  return s;
+}
+
+// A chip against the rake face: particles at x < 0 from the machined surface up to `length`,
+// thickness(y) wide, plastically strained (so they are chip); rows in `failed_rows` fully damaged.
+Particles chip_particles_of(double length, const std::function<double(double)>& thickness,
+                            const std::vector<int>& failed_rows = {}) {
+  Particles p;
+  for (int j = 0; (j + 0.5) * kD < length; ++j) {
+    const double y = (j + 0.5) * kD;
+    for (int i = 0; (i + 0.5) * kD < thickness(y); ++i) {
+      const std::size_t k = p.add(Vec2(-(i + 0.5) * kD, y), Vec2(-20.0, 12.0), 1e-7, kD * kD, 400.0, 0, 0);
+      p.plastic_strain[k] = 1.0;
+      for (int r : failed_rows)
+        if (r == j) p.damage[k] = 0.999;
+    }
+  }
+  return p;
+}
+
+TEST(ChipAnalysis, ShearAngleFromChipRatioMatchesMerchantsGeometry) {
+  // r = sin(phi)/cos(phi - alpha) inverted: tan(phi) = r cos(alpha) / (1 - r sin(alpha)).
+  for (double alpha : {-10.0, 0.0, 6.0, 15.0})
+    for (double phi : {15.0, 25.0, 35.0, 45.0}) {
+      const double rad = std::numbers::pi / 180.0;
+      const double r = std::sin(phi * rad) / std::cos((phi - alpha) * rad);
+      EXPECT_NEAR(shear_angle_from_chip_ratio_deg(r, alpha), phi, 1e-10) << "alpha " << alpha;
+    }
+  EXPECT_NEAR(shear_angle_from_chip_ratio_deg(1.0, 0.0), 45.0, 1e-12);
+}
+
+TEST(ChipAnalysis, ChipIsTheMovedMaterialAboveTheMachinedSurface) {
+  const ChipAnalysisSetup s = synthetic_setup();
+  Particles p;
+  p.add(Vec2(-50e-6, 50e-6), Vec2::Zero(), 1, 1, 300, 0, 0);   // uncut layer, no strain: not chip
+  p.add(Vec2(-50e-6, 50e-6), Vec2::Zero(), 1, 1, 300, 0, 0);   // uncut layer, strained: chip
+  p.plastic_strain[1] = 0.5;
+  p.add(Vec2(-50e-6, 110e-6), Vec2::Zero(), 1, 1, 300, 0, 0);  // above the uncut surface: chip
+  p.add(Vec2(-50e-6, -20e-6), Vec2::Zero(), 1, 1, 300, 0, 0);  // below the machined surface
+  p.plastic_strain[3] = 2.0;
+  p.add(Vec2(-50e-6, 110e-6), Vec2::Zero(), 1, 1, 300, 1, 0);  // another body
+  EXPECT_EQ(chip_particles(p, s), (std::vector<char>{0, 1, 1, 0, 0}));
+}
+
+TEST(ChipAnalysis, StraightChipIsContinuousWithItsThicknessRatio) {
+  const ChipAnalysisSetup s = synthetic_setup();
+  const double tc = 150e-6;
+  const ChipAnalysis a = analyze_chip(chip_particles_of(1e-3, [&](double) { return tc; }), s);
+  EXPECT_EQ(a.classification, "continuous");
+  EXPECT_EQ(a.pieces, 1u);
+  EXPECT_NEAR(*a.segmentation.mean_thickness_m, tc, 1e-12);
+  EXPECT_EQ(*a.segmentation.degree, 0.0);
+  EXPECT_NEAR(*a.chip_thickness_ratio, kT0 / tc, 1e-9);
+  EXPECT_NEAR(*a.shear_angle_from_ratio_deg, std::atan(kT0 / tc) * 180.0 / std::numbers::pi, 1e-6);
+  EXPECT_NEAR(*a.chip_velocity_m_per_s, 20.0 * kT0 / tc, 1e-9);
+  EXPECT_NEAR(*a.chip_velocity_from_particles_m_per_s, 12.0, 1e-9);  // (v - v_tool) along the rake face
+  EXPECT_FALSE(a.segmentation_frequency_Hz.has_value());
+}
+
+TEST(ChipAnalysis, SawtoothChipIsSerrated) {
+  const ChipAnalysisSetup s = synthetic_setup();
+  const double h = 80e-6, H = 160e-6, pitch = 100e-6;
+  const ChipAnalysis a = analyze_chip(
+      chip_particles_of(1e-3, [&](double y) { return h + (H - h) * std::fmod(y, pitch) / pitch; }), s);
+  EXPECT_EQ(a.classification, "serrated");
+  EXPECT_EQ(a.pieces, 1u);
+  EXPECT_GE(a.segmentation.segments, 7u);
+  EXPECT_NEAR(*a.segmentation.degree, (H - h) / H, 0.06);
+  EXPECT_NEAR(*a.segmentation.pitch_m, pitch, kD);
+  const double vc = 20.0 * *a.chip_thickness_ratio;
+  EXPECT_NEAR(*a.segmentation_frequency_Hz, vc / *a.segmentation.pitch_m, 1e-6);
+}
+
+TEST(ChipAnalysis, BlocksSeparatedByFailedRowsAreDiscontinuous) {
+  const ChipAnalysisSetup s = synthetic_setup();
+  // Rows 40 and 80 (y = 200 and 400 um) fully damaged: three pieces of 100 um x ~200 um.
+  const ChipAnalysis a = analyze_chip(chip_particles_of(600e-6, [](double) { return 100e-6; }, {40, 80}), s);
+  EXPECT_EQ(a.classification, "discontinuous");
+  EXPECT_EQ(a.pieces, 3u);
+  EXPECT_EQ(a.fragment_particles, 40u);  // the failed particles
+}
+
+TEST(ChipAnalysis, TemperaturePeaksByRegion) {
+  const ChipAnalysisSetup s = synthetic_setup();
+  Particles p = chip_particles_of(1e-3, [](double) { return 150e-6; });
+  Particles extra;
+  // Hot spots: one touching the rake face, one in the primary shear zone ahead of the edge, one in
+  // the chip far from both (counts only for the overall maximum).
+  auto hot = [&p](const Vec2& x, double T) {
+    const std::size_t k = p.add(x, Vec2::Zero(), 1e-7, kD * kD, T, 0, 0);
+    p.plastic_strain[k] = 1.0;
+  };
+  hot(Vec2(-0.5 * kD, 300e-6), 1400.0);
+  hot(Vec2(-60e-6, 50e-6), 1100.0);
+  hot(Vec2(-140e-6, 800e-6), 1500.0);
+  const ChipAnalysis a = analyze_chip(p, s);
+  EXPECT_EQ(*a.max_temperature_K, 1500.0);
+  EXPECT_EQ(*a.tool_chip_interface.max_K, 1400.0);
+  EXPECT_EQ(*a.primary_shear_zone.max_K, 1100.0);
+  EXPECT_NEAR(a.primary_shear_zone.position_m->x(), -60e-6, 1e-15);
+}
+
+TEST(ChipAnalysis, NoChipAndJsonKeys) {
+  const ChipAnalysisSetup s = synthetic_setup();
+  const ChipAnalysis a = analyze_chip(Particles{}, s);
+  EXPECT_EQ(a.classification, "none");
+  const nlohmann::json j = chip_json(a);
+  for (const char* key : {"classification", "segmentation_degree", "peak_height_m", "valley_height_m", "pitch_m",
+                          "segmentation_frequency_Hz", "chip_thickness_ratio", "shear_angle_from_ratio_deg",
+                          "shear_band_angle_deg", "pieces", "segments"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  EXPECT_TRUE(j["segmentation_degree"].is_null());
+  EXPECT_TRUE(temperature_json(a)["primary_shear_zone"]["max_K"].is_null());
+}
+
+TEST(ChipAnalysis, SetupNeedsACuttingScene) {
+  Scene scene;
+  EXPECT_THROW(chip_analysis_setup(scene, Vec2::Zero(), 0.0), std::invalid_argument);
+}
+
+TEST(ChipAnalysis, AnalyzeCommandRefusesWhatIsNotACuttingResult) {
+  EXPECT_EQ(analyze_result_directory("/nonexistent/mpmcut_result", "last"), 2);
+  EXPECT_EQ(analyze_result_directory(std::filesystem::temp_directory_path(), "last"), 2);
+}
+
+}  // namespace
+}  // namespace mpmcut

@@ -1,0 +1,134 @@
+// Chip free-surface profile: peak/valley detection with a prominence threshold, the segmentation
+// degree Gs = (H - h)/H and the pitch on synthetic profiles with known answers (docs/analysis.md),
+// and the walk along a chip (trace_chip_profile) on particle sets of known thickness.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "analysis/chip_profile.hpp"
+
+namespace mpmcut {
+namespace {
+
+ChipProfile profile_of(std::vector<double> thickness, double spacing) {
+  ChipProfile p;
+  p.spacing_m = spacing;
+  p.thickness_m = std::move(thickness);
+  return p;
+}
+
+// Saw-tooth: rises linearly from h to H over `period` samples, then drops; ends on a valley sample.
+std::vector<double> sawtooth(double h, double H, int period, int teeth) {
+  std::vector<double> y;
+  for (int k = 0; k < period * teeth; ++k) y.push_back(h + (H - h) * (k % period) / (period - 1));
+  y.push_back(h);
+  return y;
+}
+
+TEST(ChipProfile, SawtoothGivesExactHeightsPitchAndDegree) {
+  const double spacing = 5e-6, h = 60e-6, H = 100e-6;
+  const ChipProfile p = profile_of(sawtooth(h, H, 10, 5), spacing);
+  const Segmentation s = measure_segmentation(p, 10e-6);
+  ASSERT_EQ(s.extrema.peaks, (std::vector<std::size_t>{9, 19, 29, 39, 49}));
+  // The first and last samples are the profile's ends, not valleys.
+  ASSERT_EQ(s.extrema.valleys, (std::vector<std::size_t>{10, 20, 30, 40}));
+  EXPECT_EQ(s.segments, 5u);
+  EXPECT_DOUBLE_EQ(*s.peak_height_m, H);
+  EXPECT_DOUBLE_EQ(*s.valley_height_m, h);
+  EXPECT_DOUBLE_EQ(*s.degree, (H - h) / H);
+  EXPECT_DOUBLE_EQ(*s.pitch_m, 10 * spacing);
+}
+
+TEST(ChipProfile, SineGivesExactHeightsPitchAndDegree) {
+  const double spacing = 2e-6, mean = 80e-6, amplitude = 20e-6;
+  std::vector<double> y;
+  for (int k = 0; k <= 100; ++k) y.push_back(mean + amplitude * std::sin(2.0 * std::numbers::pi * k / 20.0));
+  const Segmentation s = measure_segmentation(profile_of(y, spacing), 10e-6);
+  ASSERT_EQ(s.extrema.peaks, (std::vector<std::size_t>{5, 25, 45, 65, 85}));
+  ASSERT_EQ(s.extrema.valleys, (std::vector<std::size_t>{15, 35, 55, 75, 95}));
+  EXPECT_NEAR(*s.peak_height_m, mean + amplitude, 1e-18);
+  EXPECT_NEAR(*s.valley_height_m, mean - amplitude, 1e-18);
+  EXPECT_NEAR(*s.degree, 2 * amplitude / (mean + amplitude), 1e-12);
+  EXPECT_NEAR(*s.pitch_m, 20 * spacing, 1e-18);
+}
+
+TEST(ChipProfile, OneParticleNoiseIsNotASegment) {
+  // Alternating +-1 particle spacing around a flat chip: below the prominence, so not a tooth.
+  const double d = 5e-6;
+  std::vector<double> y;
+  for (int k = 0; k < 60; ++k) y.push_back(100e-6 + (k % 2 ? d : -d) * 0.5);
+  const Segmentation s = measure_segmentation(profile_of(y, 5e-6), 1.5 * d);
+  EXPECT_TRUE(s.extrema.peaks.empty());
+  EXPECT_TRUE(s.extrema.valleys.empty());
+  EXPECT_EQ(s.segments, 0u);
+  EXPECT_EQ(*s.degree, 0.0);
+  EXPECT_NEAR(*s.mean_thickness_m, 100e-6, 1e-12);
+  EXPECT_FALSE(s.pitch_m.has_value());
+}
+
+TEST(ChipProfile, EmptyProfileHasNoMetrics) {
+  const Segmentation s = measure_segmentation(ChipProfile{}, 1e-6);
+  EXPECT_FALSE(s.degree.has_value());
+  EXPECT_FALSE(s.mean_thickness_m.has_value());
+  EXPECT_EQ(s.segments, 0u);
+}
+
+// A straight chip of `rows` x `columns` particles of spacing d against a rake face x = 0 (it lies at x < 0).
+std::vector<Vec2> straight_chip(int rows, int columns, double d) {
+  std::vector<Vec2> x;
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < columns; ++i) x.emplace_back(-(i + 0.5) * d, (j + 0.5) * d);
+  return x;
+}
+
+TEST(ChipProfile, TraceMeasuresAStraightChipExactly) {
+  const double d = 5e-6;
+  const std::vector<Vec2> x = straight_chip(200, 24, d);  // 120 um thick, 1 mm long
+  const ChipProfile p = trace_chip_profile(x, Vec2(0.0, 10 * d), Vec2(0, 1), Vec2(-1, 0), 0.5 * 2 * d, d, 600e-6, 100e-6);
+  ASSERT_GT(p.thickness_m.size(), 150u);
+  for (std::size_t k = 0; k < p.thickness_m.size(); ++k)
+    ASSERT_NEAR(p.thickness_m[k], 24 * d, 1e-12) << "sample " << k;
+}
+
+TEST(ChipProfile, TraceFollowsACurledChip) {
+  // A chip that curls away from the tool: an annulus arc of inner radius R (the rake side is the
+  // outer rim), thickness T, over 150 degrees. The walk must measure T across it, not its projection.
+  const double d = 5e-6, R = 200e-6, T = 100e-6;
+  const Vec2 centre(-R - T, 0.0);  // rake face x = 0 touches the outer rim at y = 0
+  std::vector<Vec2> x;
+  for (double r = R + 0.5 * d; r < R + T; r += d) {
+    const double dtheta = d / r;
+    for (double theta = -0.2; theta < 150.0 * std::numbers::pi / 180.0; theta += dtheta)
+      x.push_back(centre + r * Vec2(std::cos(theta), std::sin(theta)));
+  }
+  const ChipProfile p = trace_chip_profile(x, Vec2(0.0, 0.0), Vec2(0, 1), Vec2(-1, 0), d, d, 600e-6, 100e-6);
+  const double arc = (R + T) * 150.0 * std::numbers::pi / 180.0;
+  ASSERT_GT(static_cast<double>(p.thickness_m.size()) * d, 0.8 * arc);
+  // All but the last two stations, where the slab runs off the arc's end face.
+  for (std::size_t k = 0; k + 2 < p.thickness_m.size(); ++k)
+    ASSERT_NEAR(p.thickness_m[k], T, 1.5 * d) << "sample " << k;
+}
+
+TEST(ChipProfile, TraceOfASawtoothChipRecoversItsTeeth) {
+  // Straight chip, outer edge a saw-tooth from 80 to 120 um with a 100 um pitch: heights and pitch
+  // within the resolution of one particle spacing.
+  const double d = 5e-6, h = 80e-6, H = 120e-6, pitch = 100e-6;
+  std::vector<Vec2> x;
+  for (int j = 0; j < 200; ++j) {
+    const double y = (j + 0.5) * d;
+    const double phase = std::fmod(y, pitch) / pitch;
+    const double thickness = h + (H - h) * phase;
+    for (int i = 0; (i + 0.5) * d < thickness; ++i) x.emplace_back(-(i + 0.5) * d, y);
+  }
+  const ChipProfile p = trace_chip_profile(x, Vec2(0.0, 0.0), Vec2(0, 1), Vec2(-1, 0), 0.5 * d, d, 600e-6, 100e-6);
+  const Segmentation s = measure_segmentation(p, 10e-6);
+  EXPECT_GE(s.segments, 8u);
+  EXPECT_NEAR(*s.peak_height_m, H, 1.5 * d);
+  EXPECT_NEAR(*s.valley_height_m, h, 1.5 * d);
+  EXPECT_NEAR(*s.pitch_m, pitch, d);
+  EXPECT_NEAR(*s.degree, (H - h) / H, 0.06);
+}
+
+}  // namespace
+}  // namespace mpmcut
