@@ -118,6 +118,7 @@ void Simulation::sort_particles_by_cell() {
 // The step
 
 void Simulation::step(double max_dt) {
+  parallel_ = particles_.size() >= parallel_min_particles_;
   const double dt = std::min(stable_time_step(), max_dt);
   if (step_ % 20 == 0) sort_particles_by_cell();
   // Conduction is sub-cycled: its explicit limit h^2/(4 alpha) is thousands of mechanical steps
@@ -167,7 +168,7 @@ void Simulation::push_particles_out_of_rigid_bodies(double dt) {
     const Vec2 lo = geom.lower() + shift, hi = geom.upper() + shift;
     const Vec2 vr = rigid_[r].velocity;
     std::vector<std::size_t> inside;
-#pragma omp parallel
+#pragma omp parallel if (parallel_)
     {
       std::vector<std::size_t> mine;
 #pragma omp for schedule(static) nowait
@@ -217,7 +218,7 @@ void Simulation::deposit_frictional_heat() {
   // Only particles whose stencil can reach a heated node (2 cells around the heated box).
   const Vec2 lo = friction_box_lo_ - Vec2::Constant(2.0), hi = friction_box_hi_ + Vec2::Constant(2.0);
   deposited_heat_.assign(n, 0.0);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (parallel_)
   for (std::size_t p = 0; p < n; ++p) {
     const Vec2 u = cell_units(P.position[p]);
     if (u.x() < lo.x() || u.x() > hi.x() || u.y() < lo.y() || u.y() > hi.y()) continue;
@@ -260,7 +261,7 @@ double Simulation::stable_time_step() const {
   if (scene_.solver.fixed_time_step > 0.0) return scene_.solver.fixed_time_step;
   const std::size_t n = particles_.size();
   double c_max = 0.0, v_max = 0.0;
-#pragma omp parallel for reduction(max : c_max, v_max) schedule(static)
+#pragma omp parallel for reduction(max : c_max, v_max) schedule(static) if (parallel_)
   for (std::size_t p = 0; p < n; ++p) {
     c_max = std::max(c_max, materials_[particles_.material[p]]->wave_speed(particles_, p));
     v_max = std::max(v_max, particles_.velocity[p].norm());
@@ -297,7 +298,7 @@ template <class F>
 void Simulation::for_each_particle_coloured(F&& scatter) {
   const int strips = static_cast<int>(strip_begin_.size()) - 1;
   for (int colour = 0; colour < 2; ++colour) {
-#pragma omp parallel for schedule(dynamic, 1)
+#pragma omp parallel for schedule(dynamic, 1) if (parallel_)
     for (int s = colour; s < strips; s += 2)
       for (std::size_t k = strip_begin_[s]; k < strip_begin_[s + 1]; ++k) scatter(strip_order_[k]);
   }
@@ -307,7 +308,7 @@ template <class F>
 double Simulation::deterministic_sum(std::size_t n, F&& f) const {
   const std::size_t chunks = (n + kSumChunk - 1) / kSumChunk;
   std::vector<double> partial(chunks, 0.0);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (parallel_)
   for (std::size_t c = 0; c < chunks; ++c) {
     double s = 0.0;
     const std::size_t end = std::min(n, (c + 1) * kSumChunk);
@@ -352,7 +353,7 @@ void Simulation::particles_to_grid() {
       }
   });
   const std::size_t nn = G.node_count();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (parallel_)
   for (std::size_t n = 0; n < nn; ++n) {
     G.velocity[n] = G.mass[n] > 0.0 ? Vec2(G.momentum[n] / G.mass[n]) : Vec2::Zero();
     if (thermal) G.temperature[n] = G.heat_capacity[n] > 0.0 ? G.temperature[n] / G.heat_capacity[n] : 0.0;
@@ -364,7 +365,7 @@ void Simulation::particles_to_grid() {
 void Simulation::apply_grid_boundary_conditions(bool momentum_only) {
   Grid& G = grid_;
   const std::size_t nn = G.node_count();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (parallel_)
   for (std::size_t n = 0; n < nn; ++n) {
     const std::uint8_t f = G.fixed[n];
     if ((f & 3) == 0) continue;
@@ -383,7 +384,7 @@ void Simulation::apply_grid_boundary_conditions(bool momentum_only) {
 void Simulation::update_grid_momentum(double dt) {
   Grid& G = grid_;
   const std::size_t nn = G.node_count();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (parallel_)
   for (std::size_t n = 0; n < nn; ++n) {
     // From the velocity (which carries the first contact pass), not the raw P2G momentum.
     // Nodes lighter than the cut-off keep their velocity: a / m there would be noise.
@@ -495,7 +496,7 @@ void Simulation::grid_to_particles(double dt) {
   // total momenta (fixed-chunk sums): an OpenMP reduction would make it vary from run to run.
   const bool body_force = b.x() != 0.0 || b.y() != 0.0;
   const Vec2 momentum_old = body_force ? total_momentum() : Vec2::Zero();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (parallel_)
   for (std::size_t p = 0; p < n; ++p) {
     Stencil st;
     const Vec2 u = cell_units(P.position[p]);
@@ -535,7 +536,7 @@ void Simulation::remap_momentum_musl() {
         if (st.w[a][c] != 0.0) G.momentum[G.index(st.i0 + a, st.j0 + c)] += st.w[a][c] * mv;
   });
   const std::size_t nn = G.node_count();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (parallel_)
   for (std::size_t n = 0; n < nn; ++n)
     G.velocity_new[n] = G.mass[n] > 0.0 ? Vec2(G.momentum[n] / G.mass[n]) : Vec2::Zero();
   apply_grid_boundary_conditions(false);
@@ -550,7 +551,7 @@ void Simulation::update_particle_stress(double dt) {
   StepContext ctx;
   ctx.dt = dt;
   ctx.cell_size = G.h;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (parallel_)
   for (std::size_t p = 0; p < n; ++p) {
     Stencil st;
     const Vec2 u = cell_units(P.position[p]);
@@ -598,7 +599,7 @@ void Simulation::conduct_heat(double dt) {
   });
   const std::size_t nn = G.node_count();
   std::vector<double>& dT = G.heat_rate;  // reused: becomes the nodal temperature increment
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (parallel_)
   for (std::size_t node = 0; node < nn; ++node) {
     if (G.heat_capacity[node] <= 0.0) {
       dT[node] = 0.0;
@@ -608,7 +609,7 @@ void Simulation::conduct_heat(double dt) {
       dT[node] = dt * G.heat_rate[node] / G.heat_capacity[node];
     }
   }
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (parallel_)
   for (std::size_t p = 0; p < n; ++p) {
     Stencil st;
     const Vec2 u = cell_units(P.position[p]);
@@ -651,7 +652,7 @@ void Simulation::check_guards() const {
   const std::size_t n = P.size();
   const Vec2 lo = grid_.domain_min, hi = grid_.domain_max;
   long bad = -1;
-#pragma omp parallel for schedule(static) reduction(max : bad)
+#pragma omp parallel for schedule(static) reduction(max : bad) if (parallel_)
   for (std::size_t p = 0; p < n; ++p) {
     const PlaneStrainTensor& s = P.stress[p];
     const bool finite = std::isfinite(P.position[p].x()) && std::isfinite(P.position[p].y()) &&

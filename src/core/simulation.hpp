@@ -79,6 +79,8 @@ class Simulation {
   // Conduction sub-cycle state: seconds since the last conduction update and steps since.
   std::pair<double, int> conduction_state() const { return {conduction_elapsed_, steps_since_conduction_}; }
   void set_conduction_state(double elapsed, int steps) { conduction_elapsed_ = elapsed; steps_since_conduction_ = steps; }  // restarts only
+  // Scenes with fewer particles than this run single-threaded (default 4096; tests lower it).
+  void set_parallel_min_particles(std::size_t n) { parallel_min_particles_ = n; }
   // Recomputes kinetic and elastic energy from the particles (dissipation terms are kept).
   void refresh_energy();
 
@@ -120,6 +122,10 @@ class Simulation {
   double conduction_elapsed_ = 0.0; // mechanical time since the last conduction update, s
   int steps_since_conduction_ = 0;
   bool conduct_now_ = false;        // this step updates conduction (P2G maps temperatures)
+  // Small scenes run their loops on one thread: a parallel region costs more than it saves, and
+  // on a busy machine waiting threads are worse. Results do not depend on it (fixed orders).
+  std::size_t parallel_min_particles_ = 4096;
+  bool parallel_ = true;
   Vec2 friction_box_lo_, friction_box_hi_;  // node index box with frictional heat this step
   long pushed_out_particles_ = 0;             // particle corrections by the rigid-body safeguard
   long removed_particles_ = 0;                // left the domain (remove_escaping_particles)

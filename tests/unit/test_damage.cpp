@@ -7,22 +7,14 @@
 
 #include "physics/damage.hpp"
 
+#include "../support/ti64_parameters.hpp"
+
 using namespace mpmcut;
 
 namespace {
 MaterialParameters ti64_damage(DamageEvolution law = DamageEvolution::Linear, double G_f = 2.0e4) {
-  MaterialParameters m;
+  MaterialParameters m = mpmcut::testing::with_jc_damage(MaterialParameters{}, law, G_f);
   m.name = "ti64-damage";
-  m.damage_enabled = true;
-  m.jc_D1 = -0.09;
-  m.jc_D2 = 0.25;
-  m.jc_D3 = -0.5;
-  m.jc_D4 = 0.014;
-  m.jc_D5 = 3.87;
-  m.min_failure_strain = 0.01;
-  m.damage_evolution = law;
-  m.fracture_energy = G_f;
-  m.max_damage = 0.999;
   return m;
 }
 double eps_f_closed_form(double eta, double lr, double ts) {

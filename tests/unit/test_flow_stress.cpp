@@ -13,28 +13,12 @@
 #include "physics/flow_stress.hpp"
 #include "physics/johnson_cook.hpp"
 
+#include "../support/ti64_parameters.hpp"
+
 using namespace mpmcut;
+using mpmcut::testing::ti64_johnson_1985;
 
 namespace {
-MaterialParameters ti64_johnson_1985() {
-  MaterialParameters m;
-  m.name = "ti64-johnson-1985";
-  m.model = MaterialModel::JohnsonCook;
-  m.density = 4430.0;
-  m.youngs_modulus = 113.8e9;
-  m.poisson_ratio = 0.342;
-  m.specific_heat = 526.3;
-  m.taylor_quinney = 0.9;
-  m.room_temperature = 298.0;
-  m.melting_temperature = 1878.0;
-  m.jc_A = 862e6;
-  m.jc_B = 331e6;
-  m.jc_n = 0.34;
-  m.jc_C = 0.012;
-  m.jc_m = 0.8;
-  m.reference_strain_rate = 1.0;
-  return m;
-}
 }  // namespace
 
 // theory §2, Eq. (2.1): the self-check values of ti64_data.md §1.7 (Johnson 85 row, T_m = 1878 K),

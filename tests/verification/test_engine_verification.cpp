@@ -218,6 +218,7 @@ TEST(Determinism, BitIdenticalAcrossThreadCounts) {
     s.bodies.push_back(disk_body("lower", "soft", Vec2(0.3, 0.3), 0.2, 2, Vec2(0.3, 0.3)));
     s.bodies.push_back(disk_body("upper", "soft", Vec2(0.7, 0.7), 0.2, 2, Vec2(-0.3, -0.3)));
     Simulation sim(s);
+    sim.set_parallel_min_particles(0);  // really run the loops on `threads` threads
     for (int k = 0; k < 60; ++k) sim.step();
     return sim.particles().position;
   };

@@ -15,41 +15,15 @@
 #include "physics/johnson_cook.hpp"
 #include "physics/material_point_driver.hpp"
 
+#include "../support/ti64_parameters.hpp"
+
 using namespace mpmcut;
 
 namespace {
-MaterialParameters ti64() {
-  MaterialParameters m;
-  m.name = "ti64-johnson-1985";
-  m.model = MaterialModel::JohnsonCook;
-  m.density = 4430.0;
-  m.youngs_modulus = 113.8e9;
-  m.poisson_ratio = 0.342;
-  m.specific_heat = 526.3;
-  m.taylor_quinney = 0.9;
-  m.room_temperature = 298.0;
-  m.melting_temperature = 1878.0;
-  m.jc_A = 862e6;
-  m.jc_B = 331e6;
-  m.jc_n = 0.34;
-  m.jc_C = 0.012;
-  m.jc_m = 0.8;
-  m.reference_strain_rate = 1.0;
-  return m;
-}
+MaterialParameters ti64() { return mpmcut::testing::ti64_johnson_1985(); }
 MaterialParameters with_damage(MaterialParameters m, DamageEvolution law = DamageEvolution::Linear,
                                double G_f = 2.0e4) {
-  m.damage_enabled = true;
-  m.jc_D1 = -0.09;
-  m.jc_D2 = 0.25;
-  m.jc_D3 = -0.5;
-  m.jc_D4 = 0.014;
-  m.jc_D5 = 3.87;
-  m.min_failure_strain = 0.01;
-  m.damage_evolution = law;
-  m.fracture_energy = G_f;
-  m.max_damage = 0.999;
-  return m;
+  return mpmcut::testing::with_jc_damage(m, law, G_f);
 }
 Mat2 simple_shear(double gamma_dot) {
   Mat2 L;
