@@ -1,12 +1,16 @@
 // mpmcut: the command-line program. Parses the command line, loads the case, and hands over to
-// run_case / run_benchmark. Errors in the input are the user's: a clear message, exit code 2.
+// run_case / resume_case / run_benchmark. Errors in the input are the user's: a clear message, exit code 2.
 #include <iostream>
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 
+#include "app/analyze_command.hpp"
 #include "app/bench_command.hpp"
+#include "app/plot_command.hpp"
+#include "app/sweep_command.hpp"
+#include "app/validate_command.hpp"
 #include "app/run_case.hpp"
 #include "io/input_error.hpp"
 #include "io/scene_parser.hpp"
@@ -23,30 +27,73 @@ int main(int argc, char** argv) {
   std::vector<std::string> overrides;
   bool no_progress = false;
   CLI::App* run = app.add_subcommand("run", "Run a case file (or the built-in default case when none is given)");
-  run->add_option("case", case_file, "Case file (TOML), see docs/input.md");
+  run->add_option("case", case_file, "Case file (TOML), see docs/input.md; default: the built-in Ti-6Al-4V cut (cases/ti64_default.toml)");
   run->add_option("-o,--out", out_dir, "Result directory (default: results/<case name>)");
   run->add_option("-t,--threads", run_options.threads, "OpenMP threads (default: all cores)")->check(CLI::Range(1, 1024));
   run->add_option("-s,--set", overrides, "Override an input key, e.g. --set solver.cfl=0.3 (repeatable)");
   run->add_flag("-f,--force", run_options.force, "Overwrite an existing result directory");
   run->add_flag("--no-progress", no_progress, "Do not print progress");
+  // Checkpoints (docs/reliability.md): a step count or a wall time.
+  const auto checkpoint_check = [](const std::string& text) -> std::string {
+    try {
+      parse_checkpoint_interval(text);
+      return {};
+    } catch (const InputError& e) {
+      return e.what();
+    }
+  };
+  std::string checkpoint_every = "30min";
+  run->add_option("--checkpoint-every", checkpoint_every,
+                  "Write a restart checkpoint every N steps (5000, 5000steps) or after a wall time (600s, 10min, 2h); "
+                  "off = only on SIGINT/SIGTERM (default: 30min)")
+      ->check(checkpoint_check);
+
+  RunOptions resume_options;
+  std::string resume_dir;
+  std::string resume_checkpoint_every = "30min";
+  bool resume_no_progress = false;
+  CLI::App* resume = app.add_subcommand(
+      "resume", "Continue a stopped run (killed, interrupted, failed to write) from its last valid checkpoint");
+  resume->add_option("result_dir", resume_dir, "Result directory of the run")->required();
+  resume->add_option("-t,--threads", resume_options.threads, "OpenMP threads (default: those of the original run)")
+      ->check(CLI::Range(1, 1024));
+  resume->add_option("--checkpoint-every", resume_checkpoint_every, "As for run (default: that of the original run)")
+      ->check(checkpoint_check);
+  resume->add_flag("-f,--force", resume_options.force,
+                   "Also resume a complete run (recomputes from its last checkpoint to the end)");
+  resume->add_flag("--no-progress", resume_no_progress, "Do not print progress");
 
   BenchOptions bench_options;
-  CLI::App* bench = app.add_subcommand("bench", "Measure particle-steps per second on a standard elastic block");
+  CLI::App* bench = app.add_subcommand(
+      "bench", "Measure particle-steps per second: elastic block, all-plastic Ti-6Al-4V block, quick cutting case");
   bench->add_option("--particles", bench_options.particles, "Approximate particle count")->check(CLI::Range(100L, 100000000L));
   bench->add_option("--steps", bench_options.steps, "Timed steps")->check(CLI::Range(1, 1000000));
   bench->add_option("--threads", bench_options.threads, "Thread counts to measure (default: 1 2)");
+  bench->add_option("--case", bench_options.which, "Which benchmark: elastic, plastic, cutting or all (default: all)")
+      ->check(CLI::IsMember({"elastic", "plastic", "cutting", "all"}));
+  bench->add_option("--cutting-steps", bench_options.cutting_steps, "Timed steps of the cutting case per thread count")
+      ->check(CLI::Range(1, 1000000));
+
+  add_plot_command(app);
+  add_sweep_command(app);
+  add_validate_command(app);
+  add_analyze_command(app);
 
   CLI11_PARSE(app, argc, argv);
 
   if (*bench) return run_benchmark(bench_options);
+  if (*resume) {
+    resume_options.out_dir = resume_dir;
+    resume_options.progress = !resume_no_progress;
+    resume_options.checkpoint_every = parse_checkpoint_interval(resume_checkpoint_every);
+    resume_options.checkpoint_every_given = resume->count("--checkpoint-every") > 0;
+    return resume_case(resume_options);
+  }
 
   Scene scene;
   try {
-    scene = case_file.empty() ? default_elastic_demo_scene() : load_scene(case_file, overrides);
-    if (case_file.empty() && !overrides.empty()) {
-      std::cerr << "error: --set needs a case file; the built-in default case takes no overrides\n";
-      return kExitInputError;
-    }
+    // Without a case file: the built-in Ti-6Al-4V cut (cases/ti64_default.toml); --set applies to it.
+    scene = case_file.empty() ? default_cutting_scene(overrides) : load_scene(case_file, overrides);
   } catch (const InputError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return kExitInputError;
@@ -57,5 +104,6 @@ int main(int argc, char** argv) {
   }
   run_options.out_dir = out_dir;
   run_options.progress = !no_progress;
+  run_options.checkpoint_every = parse_checkpoint_interval(checkpoint_every);
   return run_case(scene, run_options);
 }

@@ -1,5 +1,9 @@
 #include "cutting/cutting_forces.hpp"
 
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
 #include <nlohmann/json.hpp>
 
 #include "core/simulation.hpp"
@@ -48,6 +52,26 @@ void CuttingForcesObserver::at_history(const Simulation& sim) {
   last_row_impulse_ = tool.impulse;
   csv_.row({t, filtered.x() * kPerMm, filtered.y() * kPerMm, tool.force.x() * kPerMm, tool.force.y() * kPerMm,
             filtered.x() * c_.width_of_cut, filtered.y() * c_.width_of_cut, -tool.displacement.x()});
+}
+
+std::string CuttingForcesObserver::checkpoint_state() const {
+  const Vec2 start = steady_start_impulse_.value_or(Vec2::Zero());
+  const double v[7] = {last_row_time_,     last_row_impulse_.x(), last_row_impulse_.y(), steady_start_time_,
+                       steady_start_impulse_ ? 1.0 : 0.0, start.x(), start.y()};
+  return std::string(reinterpret_cast<const char*>(v), sizeof v);
+}
+
+void CuttingForcesObserver::restore_checkpoint_state(std::string_view state) {
+  double v[7];
+  if (state.size() != sizeof v)
+    throw std::runtime_error("forces observer: checkpoint state has " + std::to_string(state.size()) +
+                             " bytes, expected " + std::to_string(sizeof v));
+  std::memcpy(v, state.data(), sizeof v);
+  last_row_time_ = v[0];
+  last_row_impulse_ = Vec2(v[1], v[2]);
+  steady_start_time_ = v[3];
+  steady_start_impulse_.reset();
+  if (v[4] != 0.0) steady_start_impulse_ = Vec2(v[5], v[6]);
 }
 
 void CuttingForcesObserver::at_finish(const Simulation& sim, nlohmann::json& summary) {

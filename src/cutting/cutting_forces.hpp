@@ -22,6 +22,9 @@ class CuttingForcesObserver final : public RunObserver {
   void at_history(const Simulation& sim) override;
   void flush() override { csv_.flush(); }
   void at_finish(const Simulation& sim, nlohmann::json& summary) override;
+  // Restarts: the row filter's and the steady window's state (io/checkpoint.hpp).
+  std::string checkpoint_state() const override;
+  void restore_checkpoint_state(std::string_view state) override;
 
  private:
   CuttingParameters c_;

@@ -1,13 +1,16 @@
 #include "io/scene_observers.hpp"
 
+#include "cutting/chip_observer.hpp"
 #include "cutting/cutting_forces.hpp"
 
 namespace mpmcut {
 
 std::vector<std::unique_ptr<RunObserver>> make_scene_observers(const Scene& scene,
-                                                               const std::filesystem::path& result_dir) {
+                                                               const std::filesystem::path& result_dir,
+                                                               bool resume) {
   std::vector<std::unique_ptr<RunObserver>> observers;
-  if (scene.cutting) observers.push_back(std::make_unique<CuttingForcesObserver>(*scene.cutting, result_dir));
+  if (scene.cutting) observers.push_back(std::make_unique<CuttingForcesObserver>(*scene.cutting, result_dir, resume));
+  if (scene.cutting) observers.push_back(std::make_unique<ChipObserver>(scene));
   return observers;
 }
 

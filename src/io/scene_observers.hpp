@@ -9,7 +9,10 @@
 
 namespace mpmcut {
 
+// `resume`: the run continues from a checkpoint, so observers open their files in append mode
+// (CsvWriter::Mode::Append) instead of creating them.
 std::vector<std::unique_ptr<RunObserver>> make_scene_observers(const Scene& scene,
-                                                               const std::filesystem::path& result_dir);
+                                                               const std::filesystem::path& result_dir,
+                                                               bool resume = false);
 
 }  // namespace mpmcut

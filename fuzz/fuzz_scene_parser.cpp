@@ -1,0 +1,20 @@
+// libFuzzer target: the case-file parser must turn any bytes into either a Scene or an
+// InputError with a message, never a crash, hang, sanitizer report or other exception.
+// Built by `make fuzz` (clang, -fsanitize=fuzzer,address,undefined); seeds: cases/*.toml.
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+#include "io/input_error.hpp"
+#include "io/scene_parser.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string_view text(reinterpret_cast<const char*>(data), size);
+  try {
+    const mpmcut::Scene scene = mpmcut::parse_scene(text, "fuzz.toml");
+    (void)scene;
+  } catch (const mpmcut::InputError&) {
+    // The user's error, reported as such: fine. Anything else escapes and libFuzzer reports it.
+  }
+  return 0;
+}

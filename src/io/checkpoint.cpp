@@ -1,0 +1,616 @@
+#include "io/checkpoint.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <zlib.h>
+
+#include <algorithm>
+#include <bit>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "io/scene_writer.hpp"
+
+namespace mpmcut {
+
+static_assert(std::endian::native == std::endian::little, "checkpoints are little-endian; add byte swapping");
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr char kMagic[8] = {'M', 'P', 'M', 'C', 'U', 'T', 'C', 'K'};
+constexpr std::uint32_t kHeaderBytes = 32;
+
+// --- Every field of the state, listed once --------------------------------------------------
+// A field added to Particles, EnergyTotals or RigidBodyState without being added here would be
+// silently lost on restart; these checks turn that into a compile error.
+struct ParticlesLayout {
+  std::vector<Vec2> a, b;
+  std::vector<Mat2> c, d;
+  std::vector<double> e, f, g;
+  std::vector<PlaneStrainTensor> h, i;
+  std::vector<double> j, k, l, m, n, o, p;
+  std::vector<std::int32_t> q, r;
+};
+static_assert(sizeof(Particles) == sizeof(ParticlesLayout),
+              "Particles gained or lost a field: update for_each_particle_array() in io/checkpoint.cpp "
+              "and bump kCheckpointFormatVersion");
+struct EnergyLayout {
+  double a, b, c, d, e, f, g;
+};
+static_assert(sizeof(EnergyTotals) == sizeof(EnergyLayout),
+              "EnergyTotals gained or lost a field: update energy_fields() in io/checkpoint.cpp");
+struct RigidLayout {
+  std::string name;
+  Vec2 a, b, c, d, e;
+  double f;
+};
+static_assert(sizeof(RigidBodyState) == sizeof(RigidLayout),
+              "RigidBodyState gained or lost a field: update the rigid-body section in io/checkpoint.cpp");
+static_assert(sizeof(Vec2) == 2 * sizeof(double) && sizeof(Mat2) == 4 * sizeof(double) &&
+              sizeof(PlaneStrainTensor) == 4 * sizeof(double));
+
+template <class P, class F>
+void for_each_particle_array(P& p, F&& f) {
+  f("position", p.position);
+  f("velocity", p.velocity);
+  f("velocity_gradient", p.velocity_gradient);
+  f("deformation_gradient", p.deformation_gradient);
+  f("mass", p.mass);
+  f("volume", p.volume);
+  f("initial_volume", p.initial_volume);
+  f("stress", p.stress);
+  f("effective_stress", p.effective_stress);
+  f("plastic_strain", p.plastic_strain);
+  f("plastic_strain_rate", p.plastic_strain_rate);
+  f("temperature", p.temperature);
+  f("damage_initiation", p.damage_initiation);
+  f("damage", p.damage);
+  f("plastic_displacement", p.plastic_displacement);
+  f("initiation_yield_stress", p.initiation_yield_stress);
+  f("body", p.body);
+  f("material", p.material);
+}
+
+template <class E>
+auto energy_fields(E& e) {
+  return std::array{&e.kinetic, &e.elastic, &e.plastic_work, &e.heat, &e.damage_dissipation, &e.friction,
+                    &e.external_work};
+}
+
+// --- Little-endian byte building and reading ------------------------------------------------
+
+class Bytes {
+ public:
+  void u32(std::uint32_t v) { raw(&v, sizeof v); }
+  void u64(std::uint64_t v) { raw(&v, sizeof v); }
+  void i64(std::int64_t v) { raw(&v, sizeof v); }
+  void f64(double v) { raw(&v, sizeof v); }
+  void vec(const Vec2& v) { f64(v.x()), f64(v.y()); }
+  void str(std::string_view s) {
+    u64(s.size());
+    raw(s.data(), s.size());
+  }
+  void raw(const void* p, std::size_t n) { data_.append(static_cast<const char*>(p), n); }
+  const std::string& data() const { return data_; }
+
+ private:
+  std::string data_;
+};
+
+class Reader {
+ public:
+  Reader(std::string_view data, std::string what) : data_(data), what_(std::move(what)) {}
+  std::uint32_t u32() { return get<std::uint32_t>(); }
+  std::uint64_t u64() { return get<std::uint64_t>(); }
+  std::int64_t i64() { return get<std::int64_t>(); }
+  double f64() { return get<double>(); }
+  Vec2 vec() {
+    const double x = f64();
+    return {x, f64()};
+  }
+  std::string str() {
+    const std::uint64_t n = u64();
+    return std::string(take(n));
+  }
+  std::string_view take(std::uint64_t n) {
+    if (n > data_.size() - pos_) fail(fmt::format("needs {} more bytes at offset {}, has {}", n, pos_, data_.size() - pos_));
+    const std::string_view s = data_.substr(pos_, n);
+    pos_ += n;
+    return s;
+  }
+  bool done() const { return pos_ == data_.size(); }
+  std::size_t pos() const { return pos_; }
+  [[noreturn]] void fail(const std::string& why) const { throw CheckpointError(what_ + ": " + why); }
+
+ private:
+  template <class T>
+  T get() {
+    T v;
+    std::memcpy(&v, take(sizeof v).data(), sizeof v);
+    return v;
+  }
+  std::string_view data_;
+  std::size_t pos_ = 0;
+  std::string what_;
+};
+
+std::uint32_t crc32_of(std::uint32_t crc, const void* p, std::size_t n) {
+  return static_cast<std::uint32_t>(crc32_z(crc, static_cast<const Bytef*>(p), n));
+}
+
+std::string system_error(const std::string& what, const fs::path& file) {
+  return fmt::format("cannot {} '{}': {}", what, file.string(), std::strerror(errno));
+}
+
+// A file written with plain POSIX calls, so that it can be fsynced and every error is seen
+// (EFBIG under a file-size limit, ENOSPC on a full disk, EIO).
+class SyncedFile {
+ public:
+  explicit SyncedFile(const fs::path& file) : file_(file) {
+    fd_ = ::open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (fd_ < 0) throw std::runtime_error(system_error("create", file));
+  }
+  ~SyncedFile() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  SyncedFile(const SyncedFile&) = delete;
+  SyncedFile& operator=(const SyncedFile&) = delete;
+
+  void write(const void* data, std::size_t n) {
+    const char* p = static_cast<const char*>(data);
+    while (n > 0) {
+      const ssize_t w = ::write(fd_, p, std::min<std::size_t>(n, 1u << 30));
+      if (w < 0) {
+        if (errno == EINTR) continue;
+        throw std::runtime_error(system_error("write", file_));
+      }
+      p += w;
+      n -= static_cast<std::size_t>(w);
+    }
+  }
+  void write_at(std::uint64_t offset, const void* data, std::size_t n) {
+    if (::pwrite(fd_, data, n, static_cast<off_t>(offset)) != static_cast<ssize_t>(n))
+      throw std::runtime_error(system_error("write", file_));
+  }
+  void sync_and_close() {
+    if (::fsync(fd_) != 0) throw std::runtime_error(system_error("fsync", file_));
+    const int fd = fd_;
+    fd_ = -1;
+    if (::close(fd) != 0) throw std::runtime_error(system_error("close", file_));
+  }
+
+ private:
+  fs::path file_;
+  int fd_ = -1;
+};
+
+// Makes a rename or create inside `dir` durable.
+void sync_directory(const fs::path& dir) {
+  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) throw std::runtime_error(system_error("open folder", dir));
+  const int rc = ::fsync(fd);
+  const int err = errno;
+  ::close(fd);
+  errno = err;
+  if (rc != 0 && errno != EINVAL) throw std::runtime_error(system_error("fsync folder", dir));
+}
+
+// Streams the payload to a SyncedFile: sections, CRC and length as it goes.
+class PayloadWriter {
+ public:
+  explicit PayloadWriter(SyncedFile& out) : out_(out) {}
+  void section(std::string_view name, const void* data, std::size_t n) {
+    Bytes head;
+    head.u32(static_cast<std::uint32_t>(name.size()));
+    head.raw(name.data(), name.size());
+    head.u64(n);
+    put(head.data().data(), head.data().size());
+    put(data, n);
+  }
+  void section(std::string_view name, const Bytes& b) { section(name, b.data().data(), b.data().size()); }
+  std::uint64_t size() const { return size_; }
+  std::uint32_t crc() const { return crc_; }
+
+ private:
+  void put(const void* p, std::size_t n) {
+    crc_ = crc32_of(crc_, p, n);
+    size_ += n;
+    out_.write(p, n);
+  }
+  SyncedFile& out_;
+  std::uint64_t size_ = 0;
+  std::uint32_t crc_ = crc32_of(0, nullptr, 0);
+};
+
+std::string header_bytes(std::uint64_t payload_size, std::uint32_t payload_crc) {
+  Bytes h;
+  h.raw(kMagic, sizeof kMagic);
+  h.u32(kCheckpointFormatVersion);
+  h.u32(kHeaderBytes);
+  h.u64(payload_size);
+  h.u32(payload_crc);
+  h.u32(crc32_of(crc32_of(0, nullptr, 0), h.data().data(), h.data().size()));
+  return h.data();
+}
+
+std::string particle_section_name(const char* field) { return std::string("particles.") + field; }
+
+long step_of_checkpoint_name(const std::string& name) {
+  constexpr std::string_view prefix = "checkpoint_", suffix = ".bin";
+  if (name.size() <= prefix.size() + suffix.size() || !name.starts_with(prefix) || !name.ends_with(suffix)) return -1;
+  const std::string digits = name.substr(prefix.size(), name.size() - prefix.size() - suffix.size());
+  if (digits.empty() || digits.size() > 18 || !std::all_of(digits.begin(), digits.end(), ::isdigit)) return -1;
+  return std::stol(digits);
+}
+
+void write_small_file_synced(const fs::path& file, const std::string& text) {
+  SyncedFile f(file);
+  f.write(text.data(), text.size());
+  f.sync_and_close();
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+
+std::uint64_t scene_hash(const Scene& scene) {
+  std::ostringstream text;
+  write_scene(scene, text);
+  std::uint64_t h = 14695981039346656037ull;  // FNV-1a 64
+  for (const unsigned char c : text.str()) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
+void write_checkpoint_file(const fs::path& file, const Simulation& sim, std::uint64_t scene_hash,
+                           const RunLoopState& loop) {
+  SyncedFile out(file);
+  const std::string placeholder(kHeaderBytes, '\0');
+  out.write(placeholder.data(), placeholder.size());
+  PayloadWriter w(out);
+
+  Bytes meta;
+  meta.u64(scene_hash);
+  meta.str(loop.mpmcut_version);
+  meta.str(loop.case_file);
+  meta.i64(loop.threads);
+  meta.f64(loop.wall_time_s);
+  meta.i64(loop.checkpoint_kind);
+  meta.f64(loop.checkpoint_value);
+  w.section("meta", meta);
+
+  Bytes clock;
+  clock.f64(sim.time());
+  clock.i64(sim.step_count());
+  clock.f64(sim.last_dt());
+  w.section("clock", clock);
+
+  const Particles& P = sim.particles();
+  Bytes count;
+  count.u64(P.size());
+  w.section("particles", count);
+  for_each_particle_array(P, [&](const char* name, const auto& array) {
+    using T = typename std::decay_t<decltype(array)>::value_type;
+    w.section(particle_section_name(name), array.data(), array.size() * sizeof(T));
+  });
+
+  Bytes rigid;
+  rigid.u64(sim.rigid_bodies().size());
+  for (const RigidBodyState& r : sim.rigid_bodies()) {
+    rigid.str(r.name);
+    rigid.vec(r.velocity);
+    rigid.vec(r.displacement);
+    rigid.vec(r.force);
+    rigid.vec(r.impulse);
+    rigid.vec(r.step_impulse);
+    rigid.f64(r.work);
+  }
+  w.section("rigid_bodies", rigid);
+
+  Bytes energy;
+  for (const double* e : energy_fields(sim.energy())) energy.f64(*e);
+  energy.i64(sim.removed_particles());
+  energy.f64(sim.removed_mass());
+  w.section("energy", energy);
+
+  Bytes conduction;
+  const auto [elapsed, steps] = sim.conduction_state();
+  conduction.f64(elapsed);
+  conduction.i64(steps);
+  w.section("conduction", conduction);
+
+  Bytes run;
+  run.f64(loop.next_snapshot_s);
+  run.f64(loop.next_history_s);
+  run.i64(loop.snapshot_count);
+  run.f64(loop.last_snapshot_time_s);
+  run.u64(loop.pvd.size());
+  for (const auto& e : loop.pvd) {
+    run.f64(e.time_s);
+    run.str(e.file);
+  }
+  run.u64(loop.files.size());
+  for (const auto& f : loop.files) {
+    run.str(f.relative_path);
+    run.u64(f.bytes);
+  }
+  run.u64(loop.observer_states.size());
+  for (const auto& s : loop.observer_states) run.str(s);
+  w.section("run_loop", run);
+
+  const std::string header = header_bytes(w.size(), w.crc());
+  out.write_at(0, header.data(), header.size());
+  out.sync_and_close();
+}
+
+Checkpoint decode_checkpoint(std::string_view bytes, const std::string& name) {
+  // Header: is it a checkpoint at all, is it complete, is it intact.
+  if (bytes.size() < kHeaderBytes) {
+    throw CheckpointError(fmt::format("checkpoint '{}' is truncated: {} bytes, shorter than the {}-byte header", name,
+                                      bytes.size(), kHeaderBytes));
+  }
+  if (std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0)
+    throw CheckpointError(fmt::format("'{}' is not an mpmcut checkpoint (wrong magic bytes)", name));
+  Reader h(bytes.substr(0, kHeaderBytes), fmt::format("checkpoint '{}' header", name));
+  h.take(sizeof kMagic);
+  const std::uint32_t version = h.u32();
+  const std::uint32_t header_size = h.u32();
+  const std::uint64_t payload_size = h.u64();
+  const std::uint32_t payload_crc = h.u32();
+  const std::uint32_t header_crc = h.u32();
+  if (crc32_of(crc32_of(0, nullptr, 0), bytes.data(), kHeaderBytes - 4) != header_crc)
+    throw CheckpointError(fmt::format("checkpoint '{}' is corrupt: header CRC mismatch", name));
+  if (version != kCheckpointFormatVersion || header_size != kHeaderBytes) {
+    throw CheckpointError(fmt::format("checkpoint '{}' has format version {}; this mpmcut reads version {}", name,
+                                      version, kCheckpointFormatVersion));
+  }
+  const std::uint64_t expected = kHeaderBytes + payload_size;
+  if (bytes.size() < expected)
+    throw CheckpointError(fmt::format("checkpoint '{}' is truncated: {} of {} bytes", name, bytes.size(), expected));
+  if (bytes.size() > expected)
+    throw CheckpointError(
+        fmt::format("checkpoint '{}' is corrupt: {} bytes, {} more than its header says", name, bytes.size(),
+                    bytes.size() - expected));
+  const std::string_view payload = bytes.substr(kHeaderBytes);
+  if (crc32_of(crc32_of(0, nullptr, 0), payload.data(), payload.size()) != payload_crc)
+    throw CheckpointError(fmt::format("checkpoint '{}' is corrupt: payload CRC mismatch (bit flip or overwritten data)",
+                                      name));
+
+  // Payload: named sections.
+  std::map<std::string, std::string_view, std::less<>> sections;
+  Reader all(payload, fmt::format("checkpoint '{}'", name));
+  while (!all.done()) {
+    const std::uint32_t n = all.u32();
+    std::string key(all.take(n));
+    sections[key] = all.take(all.u64());
+  }
+  auto section = [&](const std::string& key) {
+    const auto it = sections.find(key);
+    if (it == sections.end()) all.fail("has no section '" + key + "'");
+    return Reader(it->second, fmt::format("checkpoint '{}', section '{}'", name, key));
+  };
+  auto finish = [](Reader& r) {
+    if (!r.done()) r.fail(fmt::format("{} unexpected bytes at the end", r.pos()));
+  };
+
+  Checkpoint c;
+  {
+    Reader r = section("meta");
+    c.scene_hash = r.u64();
+    c.loop.mpmcut_version = r.str();
+    c.loop.case_file = r.str();
+    c.loop.threads = static_cast<int>(r.i64());
+    c.loop.wall_time_s = r.f64();
+    c.loop.checkpoint_kind = static_cast<int>(r.i64());
+    c.loop.checkpoint_value = r.f64();
+    finish(r);
+  }
+  {
+    Reader r = section("clock");
+    c.time_s = r.f64();
+    c.step = r.i64();
+    c.last_dt_s = r.f64();
+    finish(r);
+  }
+  {
+    Reader r = section("particles");
+    const std::uint64_t n = r.u64();
+    if (n > payload.size()) r.fail("implausible particle count");
+    finish(r);
+    for_each_particle_array(c.particles, [&](const char* field, auto& array) {
+      using T = typename std::decay_t<decltype(array)>::value_type;
+      const std::string key = particle_section_name(field);
+      Reader a = section(key);
+      const std::string_view data = a.take(n * sizeof(T));
+      finish(a);
+      array.resize(n);
+      std::memcpy(static_cast<void*>(array.data()), data.data(), data.size());
+    });
+  }
+  {
+    Reader r = section("rigid_bodies");
+    const std::uint64_t n = r.u64();
+    if (n > payload.size()) r.fail("implausible rigid body count");
+    for (std::uint64_t k = 0; k < n; ++k) {
+      RigidBodyState s;
+      s.name = r.str();
+      s.velocity = r.vec();
+      s.displacement = r.vec();
+      s.force = r.vec();
+      s.impulse = r.vec();
+      s.step_impulse = r.vec();
+      s.work = r.f64();
+      c.rigid_bodies.push_back(s);
+    }
+    finish(r);
+  }
+  {
+    Reader r = section("energy");
+    for (double* e : energy_fields(c.energy)) *e = r.f64();
+    c.removed_particles = r.i64();
+    c.removed_mass = r.f64();
+    finish(r);
+  }
+  {
+    Reader r = section("conduction");
+    c.conduction_elapsed_s = r.f64();
+    c.steps_since_conduction = static_cast<int>(r.i64());
+    finish(r);
+  }
+  {
+    Reader r = section("run_loop");
+    c.loop.next_snapshot_s = r.f64();
+    c.loop.next_history_s = r.f64();
+    c.loop.snapshot_count = static_cast<int>(r.i64());
+    c.loop.last_snapshot_time_s = r.f64();
+    const std::uint64_t entries = r.u64();
+    if (entries > payload.size()) r.fail("implausible PVD entry count");
+    for (std::uint64_t k = 0; k < entries; ++k) {
+      const double t = r.f64();
+      c.loop.pvd.push_back({t, r.str()});
+    }
+    const std::uint64_t files = r.u64();
+    if (files > payload.size()) r.fail("implausible file count");
+    for (std::uint64_t k = 0; k < files; ++k) {
+      FileLength f;
+      f.relative_path = r.str();
+      f.bytes = r.u64();
+      c.loop.files.push_back(f);
+    }
+    const std::uint64_t observers = r.u64();
+    if (observers > payload.size()) r.fail("implausible observer count");
+    for (std::uint64_t k = 0; k < observers; ++k) c.loop.observer_states.push_back(r.str());
+    finish(r);
+  }
+  return c;
+}
+
+Checkpoint read_checkpoint_file(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw CheckpointError(system_error("read checkpoint", file));
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) throw CheckpointError(system_error("read checkpoint", file));
+  return decode_checkpoint(bytes, file.string());
+}
+
+void Checkpoint::restore(Simulation& sim) && {
+  const std::string where = fmt::format("checkpoint at step {}", step);
+  const Scene& scene = sim.scene();
+  if (rigid_bodies.size() != sim.rigid_bodies().size())
+    throw CheckpointError(fmt::format("{} has {} rigid bodies, the scene {}", where, rigid_bodies.size(),
+                                      sim.rigid_bodies().size()));
+  for (std::size_t r = 0; r < rigid_bodies.size(); ++r) {
+    if (rigid_bodies[r].name != sim.rigid_bodies()[r].name)
+      throw CheckpointError(fmt::format("{}: rigid body {} is '{}', the scene's is '{}'", where, r,
+                                        rigid_bodies[r].name, sim.rigid_bodies()[r].name));
+  }
+  // A CRC-valid file from this program is consistent; these checks keep a hand-made one from
+  // indexing out of bounds.
+  const std::size_t n = particles.size();
+  for_each_particle_array(particles, [&](const char* field, const auto& array) {
+    if (array.size() != n) throw CheckpointError(fmt::format("{}: particle array '{}' has the wrong length", where, field));
+  });
+  for (std::size_t p = 0; p < n; ++p) {
+    if (particles.body[p] < 0 || static_cast<std::size_t>(particles.body[p]) >= scene.bodies.size() ||
+        particles.material[p] < 0 || static_cast<std::size_t>(particles.material[p]) >= scene.materials.size())
+      throw CheckpointError(fmt::format("{}: particle {} has body {} / material {}, not in the scene", where, p,
+                                        particles.body[p], particles.material[p]));
+  }
+  sim.particles() = std::move(particles);
+  sim.rigid_bodies() = std::move(rigid_bodies);
+  sim.energy() = energy;
+  sim.set_clock(time_s, step);
+  sim.set_last_dt(last_dt_s);
+  sim.set_removed(removed_particles, removed_mass);
+  sim.set_conduction_state(conduction_elapsed_s, steps_since_conduction);
+}
+
+// ---------------------------------------------------------------------------------------------
+
+CheckpointStore::CheckpointStore(const fs::path& result_dir) : folder_(result_dir / "checkpoints") {}
+
+std::vector<fs::path> CheckpointStore::list() const {
+  std::vector<std::pair<long, fs::path>> found;
+  std::error_code ec;
+  for (const fs::directory_entry& e : fs::directory_iterator(folder_, ec)) {
+    const long step = step_of_checkpoint_name(e.path().filename().string());
+    if (step >= 0 && e.is_regular_file(ec)) found.emplace_back(step, e.path());
+  }
+  std::sort(found.begin(), found.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::vector<fs::path> files;
+  for (auto& f : found) files.push_back(std::move(f.second));
+  return files;
+}
+
+fs::path CheckpointStore::write(const Simulation& sim, std::uint64_t scene_hash, const RunLoopState& loop) {
+  std::error_code ec;
+  fs::create_directories(folder_, ec);
+  if (ec) throw std::runtime_error(fmt::format("cannot create '{}': {}", folder_.string(), ec.message()));
+  const fs::path tmp = folder_ / "checkpoint.tmp";
+  const fs::path file = folder_ / fmt::format("checkpoint_{}.bin", sim.step_count());
+  try {
+    write_checkpoint_file(tmp, sim, scene_hash, loop);
+    fs::rename(tmp, file);
+  } catch (...) {
+    fs::remove(tmp, ec);
+    throw;
+  }
+  sync_directory(folder_);
+  // The pointer, replaced the same way.
+  const fs::path pointer_tmp = folder_ / "latest.tmp";
+  try {
+    write_small_file_synced(pointer_tmp, file.filename().string() + "\n");
+    fs::rename(pointer_tmp, folder_ / "latest");
+  } catch (...) {
+    fs::remove(pointer_tmp, ec);
+    throw;
+  }
+  sync_directory(folder_);
+  // Only now is the old one expendable; the one before this is kept as a fallback.
+  for (const fs::path& old : list()) {
+    if (old != file && old != previous_) fs::remove(old, ec);
+  }
+  previous_ = file;
+  return file;
+}
+
+CheckpointStore::Loaded CheckpointStore::load_newest_valid() const {
+  std::vector<fs::path> candidates;
+  std::vector<std::string> rejected;
+  const fs::path pointer = folder_ / "latest";
+  if (std::ifstream in(pointer); in) {
+    std::string name;
+    std::getline(in, name);
+    if (step_of_checkpoint_name(name) >= 0 && fs::exists(folder_ / name)) {
+      candidates.push_back(folder_ / name);
+    } else {
+      rejected.push_back(fmt::format("'{}' names '{}', which does not exist", pointer.string(), name));
+    }
+  }
+  for (const fs::path& f : list())
+    if (candidates.empty() || f != candidates.front()) candidates.push_back(f);
+  for (const fs::path& f : candidates) {
+    try {
+      Loaded loaded{read_checkpoint_file(f), f, rejected};
+      return loaded;
+    } catch (const CheckpointError& e) {
+      rejected.push_back(e.what());
+    }
+  }
+  std::string message = fmt::format("no usable checkpoint in '{}'", folder_.string());
+  if (candidates.empty()) message += " (there are none: the run stopped before its first checkpoint)";
+  for (const std::string& r : rejected) message += "\n  " + r;
+  throw CheckpointError(message);
+}
+
+}  // namespace mpmcut
