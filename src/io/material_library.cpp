@@ -139,13 +139,7 @@ MaterialParameters read_material(TableReader& t, const MaterialLibrary& library)
 }
 
 void MaterialLibrary::add_file(std::string_view toml_text, const std::string& source_name) {
-  toml::table root;
-  try {
-    root = toml::parse(toml_text, std::string_view(source_name));
-  } catch (const toml::parse_error& e) {
-    throw InputError(fmt::format("{}:{}:{}: TOML syntax error: {}", source_name, e.source().begin.line,
-                                 e.source().begin.column, e.description()));
-  }
+  toml::table root = parse_toml(toml_text, source_name);
   auto source = std::make_shared<InputSource>(InputSource{source_name, {}});
   TableReader file(root, "", source);
   for (TableReader& t : file.array_of_tables("material")) {

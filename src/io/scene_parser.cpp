@@ -448,13 +448,7 @@ Scene read_scene(const toml::table& root, const std::shared_ptr<const InputSourc
 }  // namespace
 
 Scene parse_scene(std::string_view toml_text, const std::string& source_name, const std::vector<std::string>& overrides) {
-  toml::table root;
-  try {
-    root = toml::parse(toml_text, std::string_view(source_name));
-  } catch (const toml::parse_error& e) {
-    throw InputError(fmt::format("{}:{}:{}: TOML syntax error: {}", source_name, e.source().begin.line,
-                                 e.source().begin.column, e.description()));
-  }
+  toml::table root = parse_toml(toml_text, source_name);
   auto source = std::make_shared<InputSource>(InputSource{source_name, {}});
   for (const std::string& o : overrides) apply_override(root, o, *source);
   return read_scene(root, source);

@@ -7,6 +7,16 @@
 
 namespace mpmcut {
 
+toml::table parse_toml(std::string_view text, const std::string& source_name) {
+  try {
+    return toml::parse(text, std::string_view(source_name));
+  } catch (const toml::parse_error& e) {
+    throw InputError(fmt::format("{}:{}:{}: TOML syntax error: {}", source_name, e.source().begin.line,
+                                 e.source().begin.column, e.description()));
+  }
+}
+
+
 namespace {
 
 // Edit distance, for "did you mean" suggestions on unknown keys.

@@ -32,6 +32,9 @@ struct InputSource {
   std::vector<Override> overrides;
 };
 
+// Parses TOML text; a syntax error becomes an InputError "name:line:col: TOML syntax error: ...".
+toml::table parse_toml(std::string_view text, const std::string& source_name);
+
 // The user-facing name of a TOML value's type ("a string", "an integer", ...).
 std::string describe_type(const toml::node& node);
 // A value as it would be written in TOML (tables and long arrays abbreviated).
