@@ -42,4 +42,19 @@ inline BodySpec disk_body(const std::string& name, const std::string& material, 
   return b;
 }
 
+// A column of length L in uniaxial strain (one cell high, roller top and bottom) moving at -v0
+// into a fixed wall at x = 0, with `cells` cells along it: the set-up of the wave tests.
+inline Scene uniaxial_strain_impact(const MaterialParameters& material, double L, int cells, double v0) {
+  const double h = L / cells;
+  Scene s;
+  s.grid = {h, Vec2(0, 0), Vec2(L + 4 * h, h)};
+  s.boundaries.left = BoundaryKind::Fixed;
+  s.boundaries.bottom = BoundaryKind::Roller;
+  s.boundaries.top = BoundaryKind::Roller;
+  s.solver.cfl = 0.3;
+  s.materials.push_back(material);
+  s.bodies.push_back(rectangle_body("column", material.name, Vec2(0, 0), Vec2(L, h), 2, Vec2(-v0, 0)));
+  return s;
+}
+
 }  // namespace mpmcut::testing

@@ -149,16 +149,7 @@ TEST(CollidingDisks, EnergyAndMomentumConserved) {
 // front sigma_xx = -rho c v0 with c = sqrt((K + 4G/3)/rho); the front travels at c.
 TEST(ElasticWave, StressBehindFrontAndFrontSpeed) {
   const double E = 200e9, nu = 0.3, rho = 7800.0, v0 = 1.0, L = 1.0;
-  const int cells = 200;
-  const double h = L / cells;
-  Scene s;
-  s.grid = {h, Vec2(0, 0), Vec2(L + 4 * h, h)};
-  s.boundaries.left = BoundaryKind::Fixed;
-  s.boundaries.bottom = BoundaryKind::Roller;
-  s.boundaries.top = BoundaryKind::Roller;
-  s.solver.cfl = 0.3;
-  s.materials.push_back(elastic_material("steel", E, nu, rho));
-  s.bodies.push_back(rectangle_body("column", "steel", Vec2(0, 0), Vec2(L, h), 2, Vec2(-v0, 0)));
+  const Scene s = uniaxial_strain_impact(elastic_material("steel", E, nu, rho), L, 200, v0);
   Simulation sim(s);
   const double c = s.materials[0].p_wave_speed();
   const double t_end = 0.5 * L / c;

@@ -100,14 +100,7 @@ TEST(PlasticWave, PrecursorAtHugoniotElasticLimitAndPlasticWaveAtBulkSpeed) {
   const double L = 4e-3;  // column length, m
   const int cells = 600;
   const double h = L / cells;
-  Scene s;
-  s.grid = {h, Vec2(0, 0), Vec2(L + 4 * h, h)};
-  s.boundaries.left = BoundaryKind::Fixed;
-  s.boundaries.bottom = BoundaryKind::Roller;
-  s.boundaries.top = BoundaryKind::Roller;
-  s.solver.cfl = 0.3;
-  s.materials.push_back(m);
-  s.bodies.push_back(rectangle_body("column", m.name, Vec2(0, 0), Vec2(L, h), 2, Vec2(-v0, 0)));
+  const Scene s = uniaxial_strain_impact(m, L, cells, v0);
   Simulation sim(s);
   const double spacing = h / 2;
 
