@@ -121,6 +121,7 @@ std::vector<std::string> history_columns() {
           "heat_J_per_m",
           "damage_dissipation_J_per_m",
           "friction_work_J_per_m",
+          "viscous_dissipation_J_per_m",
           "external_work_J_per_m",
           "momentum_x_kg_m_per_s_per_m",
           "momentum_y_kg_m_per_s_per_m",
@@ -174,7 +175,7 @@ class RunOutputs {
     const EnergyTotals& e = sim_.energy();
     const Vec2 m = sim_.total_momentum();
     history_.row({sim_.time(), static_cast<double>(sim_.step_count()), sim_.last_dt(), e.kinetic, e.elastic,
-                  e.plastic_work, e.heat, e.damage_dissipation, e.friction, e.external_work, m.x(), m.y(),
+                  e.plastic_work, e.heat, e.damage_dissipation, e.friction, e.viscous, e.external_work, m.x(), m.y(),
                   sim_.max_temperature()});
   }
 
@@ -264,6 +265,7 @@ nlohmann::json summary_json(const Simulation& sim, const char* status, double wa
                          {"heat", e.heat},
                          {"damage_dissipation", e.damage_dissipation},
                          {"friction_work", e.friction},
+                         {"viscous_dissipation", e.viscous},
                          {"external_work", e.external_work}};
   j["max_temperature_K"] = sim.max_temperature();
   nlohmann::json rigid = nlohmann::json::array();

@@ -572,6 +572,7 @@ void Simulation::update_particle_stress(double dt) {
   energy_.heat += deterministic_sum(n, [&](std::size_t p) { return increments_[p].heat; });
   energy_.damage_dissipation +=
       deterministic_sum(n, [&](std::size_t p) { return increments_[p].damage_dissipation; });
+  energy_.viscous += deterministic_sum(n, [&](std::size_t p) { return increments_[p].viscous_dissipation; });
 }
 
 // Explicit heat conduction on the grid (Nairn's transport task structure): nodal

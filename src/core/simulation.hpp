@@ -41,6 +41,7 @@ struct EnergyTotals {
   double heat = 0.0;               // plastic heating + frictional heating
   double damage_dissipation = 0.0;
   double friction = 0.0;           // frictional work at rigid contacts
+  double viscous = 0.0;            // work of the artificial bulk viscosity (shocks), >= 0
   double external_work = 0.0;      // work by rigid bodies + body force
 };
 

@@ -81,7 +81,7 @@ struct Checkpoint {
   void restore(Simulation& sim) &&;
 };
 
-inline constexpr std::uint32_t kCheckpointFormatVersion = 1;
+inline constexpr std::uint32_t kCheckpointFormatVersion = 2;  // 2: EnergyTotals::viscous
 
 // Hash (64-bit FNV-1a) of the expanded scene as write_scene() prints it: equal for scenes that
 // are equal, whatever file they came from.

@@ -71,7 +71,21 @@ DamageStep JohnsonCookDamage::advance(DamageState& s, double d_eps, double eps_f
     }
   }
   step.strain_after_initiation = after;
-  const double du = length * after;
+  evolve(s, length * after, flow_stress, step);
+  return step;
+}
+
+DamageStep JohnsonCookDamage::open(DamageState& s, double d_opening, double length) const {
+  DamageStep step;
+  step.damage_before = s.damage;
+  step.failed = s.damage >= max_damage_;
+  if (step.failed || !(d_opening > 0.0) || s.initiation < 1.0) return step;
+  step.strain_after_initiation = d_opening;
+  evolve(s, length * d_opening, s.initiation_yield_stress, step);
+  return step;
+}
+
+void JohnsonCookDamage::evolve(DamageState& s, double du, double stress, DamageStep& step) const {
   s.plastic_displacement += du;
   double D;
   if (evolution_ == DamageEvolution::Linear) {
@@ -79,14 +93,13 @@ DamageStep JohnsonCookDamage::advance(DamageState& s, double d_eps, double eps_f
   } else {
     // 1 - D = exp(-W/G_f) with W = int sigma_y du_pl: multiply the intact fraction by exp(-dW/G_f),
     // so no extra state is needed for W.
-    D = 1.0 - (1.0 - s.damage) * std::exp(-flow_stress * du * inverse_fracture_energy_);
+    D = 1.0 - (1.0 - s.damage) * std::exp(-stress * du * inverse_fracture_energy_);
   }
   if (D >= max_damage_) {
     D = max_damage_;
     step.failed = true;
   }
   s.damage = D > s.damage ? D : s.damage;  // never heals
-  return step;
 }
 
 PlaneStrainTensor degraded_stress(const PlaneStrainTensor& s, double pressure, double D, bool failed) {

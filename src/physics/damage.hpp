@@ -5,7 +5,8 @@
 // Initiation:  eps_f = [D1 + D2 exp(D3 eta)] [1 + D4 ln epsdot*] [1 + D5 T*],  eps_f >= min_failure_strain,
 //              eta = -p/q (tension positive), epsdot* floored at 1, T* clamped to [0, 1];
 //              omega += d(eps_p)/eps_f while omega < 1 (frozen once it reaches 1).
-// Evolution after initiation:  u_pl += L d(eps_p)  (L = cell size)
+// Evolution after initiation:  u_pl += L (d(eps_p) + d(eps_open))  (L = cell size; eps_open: the
+//              volumetric opening of the tensile cut-off, see johnson_cook.hpp)
 //              linear:       D = u_pl/u_f,  u_f = 2 G_f/sigma_y0  (sigma_y0 = flow stress at initiation)
 //              exponential:  D = 1 - exp(-int sigma_y du_pl / G_f)  (sigma_y undamaged)
 //              D <= max_damage; D = max_damage means fully failed.
@@ -56,7 +57,15 @@ class JohnsonCookDamage {
   DamageStep advance(DamageState& state, double d_eps_p, double failure_strain, double flow_stress,
                      double length_m) const;
 
+  // Crack opening after initiation (mode I): the volumetric strain d_opening that the tensile
+  // cut-off of JohnsonCookMaterial turned into opening drives u_pl as plastic strain does,
+  // u_pl += L d_opening, at the stress sigma_y0. Does nothing before initiation or after failure.
+  DamageStep open(DamageState& state, double d_opening, double length_m) const;
+
  private:
+  // u_pl += du and the damage law; `stress` is the undamaged stress that works through du.
+  void evolve(DamageState& state, double du, double stress, DamageStep& step) const;
+
   bool enabled_;
   double D1_, D2_, D3_, D4_, D5_;
   double min_failure_strain_;

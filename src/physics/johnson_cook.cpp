@@ -133,7 +133,7 @@ ConstitutiveIncrement JohnsonCookMaterial::update(Particles& p, std::size_t i, c
   }
 
   // 4. Pressure from the EOS at the end-of-step density and temperature (+ bulk viscosity).
-  const double pressure = eos_.pressure(old_pressure, ev, density, T);
+  double pressure = eos_.pressure(old_pressure, ev, density, T);
   double viscous_pressure = 0.0;
   if (eos_.has_bulk_viscosity() && ev < 0.0) {
     const double c = std::sqrt((eos_.bulk_modulus(density) + 4.0 / 3.0 * G_) / density);
@@ -141,29 +141,58 @@ ConstitutiveIncrement JohnsonCookMaterial::update(Particles& p, std::size_t i, c
     inc.viscous_dissipation = viscous_pressure * (-ev) * volume;
   }
 
-  // 5. Damage: initiation and evolution on the undamaged state, then degradation.
+  // 5. Tensile cut-off after initiation (mode I opening, theory_materials.md §5.5): once damage has
+  //    initiated, the undamaged hydrostatic tension stays at or below sigma_y0, and the volumetric strain
+  //    beyond it opens the crack and drives u_pl as plastic strain does. Without it, a band held laterally
+  //    by its neighbours (isochoric flow cannot open it) stores ever more hydrostatic tension and its
+  //    dissipation depends on the cell size.
+  double opening = 0.0;              // volumetric strain turned into crack opening
+  double opening_dissipation = 0.0;  // undamaged energy it dissipates, J/m^3
+  if (damage_.enabled() && !failed0 && p.damage_initiation[i] >= 1.0) {
+    const double cap = p.initiation_yield_stress[i];
+    if (-pressure > cap) {
+      const double K = eos_.bulk_modulus(density);
+      opening = (-pressure - cap) / K;
+      // Total law p(rho) (Mie-Grueneisen): only this step's stretch is new opening.
+      if (eos_.kind() != EquationOfState::Linear) opening = std::min(opening, std::max(ev, 0.0));
+      // Work of the final (capped) stress through the opening, as sigma_y d(eps_p) for plastic flow,
+      // plus, on the first capped step, the stored tension above the cap that initiation released.
+      const double excess_old = std::max(-old_pressure - cap, 0.0);
+      opening_dissipation = cap * opening + excess_old * excess_old / (2.0 * K);
+      pressure = -cap;
+    }
+  }
+
+  // 6. Damage: initiation and evolution on the undamaged state, then degradation.
   double D = D0;
   double before = dep, after = 0.0;  // plastic increment before / after initiation
   bool failed = failed0;
-  if (damage_.enabled() && dep > 0.0 && !failed0) {
+  if (damage_.enabled() && !failed0 && (dep > 0.0 || opening > 0.0)) {
     DamageState st{p.damage_initiation[i], D0, p.plastic_displacement[i], p.initiation_yield_stress[i]};
-    double eps_f = 0.0;
-    if (st.initiation < 1.0) {
-      if (!log_rate_known) log_rate = flow_.log_rate_ratio(rate);
-      eps_f = damage_.failure_strain(stress_triaxiality(pressure, q), log_rate, flow_.homologous_temperature(T));
+    // Hillerborg length: the cell size, stretched with the particle (J = V/V0). An opening band
+    // thickens normal to the crack only, so L J is its current thickness and L J d(eps) its opening;
+    // then each particle dissipates G_f V0/L whatever its stretch. In shear bands J ~ 1.
+    const double band_length = ctx.cell_size * volume / p.initial_volume[i];
+    if (dep > 0.0) {
+      double eps_f = 0.0;
+      if (st.initiation < 1.0) {
+        if (!log_rate_known) log_rate = flow_.log_rate_ratio(rate);
+        eps_f = damage_.failure_strain(stress_triaxiality(pressure, q), log_rate, flow_.homologous_temperature(T));
+      }
+      const DamageStep ds = damage_.advance(st, dep, eps_f, q, band_length);
+      before = ds.strain_before_initiation;
+      after = ds.strain_after_initiation;
+      failed = ds.failed;
     }
-    const DamageStep ds = damage_.advance(st, dep, eps_f, q, ctx.cell_size);
+    if (opening > 0.0) failed = damage_.open(st, opening, band_length).failed || failed;
     p.damage_initiation[i] = st.initiation;
     p.damage[i] = st.damage;
     p.plastic_displacement[i] = st.plastic_displacement;
     p.initiation_yield_stress[i] = st.initiation_yield_stress;
     D = st.damage;
-    before = ds.strain_before_initiation;
-    after = ds.strain_after_initiation;
-    failed = ds.failed;
   }
 
-  // 6. Energy increments (theory_materials.md §6). Work of the actual (degraded) stress through
+  // 7. Energy increments (theory_materials.md §6). Work of the actual (degraded) stress through
   //    plastic flow: (1 - D0) sigma_y d(eps_p) V. Before initiation it is plastic work; after initiation
   //    it belongs to the fracture process (damage dissipation), together with the elastic energy
   //    released as D grows, Y dD V with Y = s:s/(4G) + <-p>^2/(2K).
@@ -174,6 +203,7 @@ ConstitutiveIncrement JohnsonCookMaterial::update(Particles& p, std::size_t i, c
     // Heat = chi x all plastic work (before and after initiation); it equals m c dT exactly.
     inc.heat = taylor_quinney_ * work_density * dep * volume;
   }
+  inc.damage_dissipation += (1.0 - D0) * opening_dissipation * volume;  // crack opening: not heat
   if (D > D0) {
     double Y = s.contract(s) / (4.0 * G_);
     if (pressure < 0.0) Y += pressure * pressure / (2.0 * eos_.bulk_modulus(density));
@@ -182,7 +212,7 @@ ConstitutiveIncrement JohnsonCookMaterial::update(Particles& p, std::size_t i, c
   }
   if (failed) s = {};
 
-  // 7. Store the state: undamaged stress (no viscosity) for the next step, degraded stress for forces.
+  // 8. Store the state: undamaged stress (no viscosity) for the next step, degraded stress for forces.
   p.effective_stress[i] = s.plus_identity(-pressure);
   p.stress[i] = degraded_stress(s, pressure + viscous_pressure, D, failed);
   p.plastic_strain[i] = eps0 + dep;

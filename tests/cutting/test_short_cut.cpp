@@ -71,7 +71,7 @@ CutResult run_cut(const CuttingParameters& c) {
   r.mean_thrust_force_N_per_m = mean.y();
   sim.refresh_energy();
   const EnergyTotals& e = sim.energy();
-  const double material_side = e.kinetic + e.elastic + e.plastic_work + e.damage_dissipation + e.friction;
+  const double material_side = e.kinetic + e.elastic + e.plastic_work + e.damage_dissipation + e.friction + e.viscous;
   r.balance_error = (material_side - e.external_work) / e.external_work;
   return r;
 }

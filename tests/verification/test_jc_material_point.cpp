@@ -360,6 +360,50 @@ TEST(JohnsonCookMaterialPoint, ExponentialSofteningDissipatesFractureEnergy) {
   EXPECT_NEAR(r.cumulative.damage_dissipation / (r.volume / L), G_f, 0.01 * G_f);
 }
 
+// theory §5.5: the tensile cut-off after initiation. Uniaxial-strain tension (eta > 1): isochoric flow
+// alone cannot fail the particle, since its hydrostatic tension would grow as K eps_v. After initiation
+// the undamaged tension stays at sigma_y0, the rest of the stretch is opening that drives u_pl, the
+// particle fails, and the energy balance (work in = stored + plastic + damage) closes, with the tension
+// stored above sigma_y0 at initiation counted as released. Both EOS forms.
+TEST(JohnsonCookMaterialPoint, TensileCutOffAfterInitiationOpensAndFails) {
+  for (EquationOfState eos : {EquationOfState::Linear, EquationOfState::MieGruneisen}) {
+    MaterialParameters m = with_damage(ti64(), DamageEvolution::Linear, 2.0e4);
+    m.jc_B = 0.0;
+    m.jc_C = 0.0;
+    m.taylor_quinney = 0.0;
+    m.eos = eos;
+    m.mg_c0 = 5130.0;  // ti64_data.md §1.5
+    m.mg_s = 1.028;
+    m.mg_gamma0 = 1.23;
+    const JohnsonCookMaterial jc(m);
+    const double L = 5e-6, uf = 2 * 2.0e4 / 862e6;
+    MaterialPointDriver d(jc, 298.0, L);
+    const double rate = 1e3, dt = 1e-7;  // 1e-4 strain per step
+    double work = 0.0;                  // int sigma : D dt V, trapezoidal
+    int k = 0;
+    while (d.last().damage < m.max_damage && k++ < 20000) {
+      const MaterialPointRecord before = d.last();
+      const MaterialPointRecord r = d.step(diagonal(rate, 0.0), dt);
+      work += 0.5 * (before.stress.xx * before.volume + r.stress.xx * r.volume) * rate * dt;
+      if (before.damage_initiation >= 1.0 && r.damage < m.max_damage) {
+        EXPECT_LE(r.effective_stress.mean(), 862e6 * (1 + 1e-12)) << "step " << k;
+        EXPECT_NEAR(r.damage, r.plastic_displacement / uf, 1e-12);
+      }
+    }
+    const MaterialPointRecord& r = d.last();
+    const char* what = eos == EquationOfState::Linear ? "linear EOS" : "Mie-Grueneisen";
+    ASSERT_EQ(r.damage, m.max_damage) << what << ": did not fail after " << k << " steps";
+    // The opening is u_f: a strain u_f/L beyond initiation at eps_p = 0.01 (1.5 % stretch), at most.
+    EXPECT_LT(std::log(r.volume), 0.015 + 1.5 * uf / L) << what;
+    const ConstitutiveIncrement& c = r.cumulative;
+    const double balance = r.elastic_energy + c.plastic_work + c.damage_dissipation;
+    // Mie-Grueneisen: elastic_energy() stores p^2/(2K) with the tangent K(rho), exact only for the linear law.
+    EXPECT_NEAR(balance, work, (eos == EquationOfState::Linear ? 0.005 : 0.02) * work) << what;
+    // After initiation about G_f per area V0/L, plus the stored tension released at initiation.
+    EXPECT_GT(c.damage_dissipation / (1.0 / L), 2.0e4) << what;
+  }
+}
+
 // theory §5, Eq. (5.5) and algorithms.md §5.5: a fully failed particle carries no tension and no shear but
 // keeps compression (and its mass).
 TEST(JohnsonCookMaterialPoint, FailedParticleKeepsCompressionOnly) {
