@@ -234,7 +234,9 @@ def case_caption(process, time_s, tool):
     return ", ".join(parts), t
 
 
-def plot_snapshot(result_dir, index, time_s, path, tool, process, material):
+def load_snapshot(path, tool, process, time_s):
+    """The mesh of one VTU snapshot, its time (from the file where it has one) and the view window of the
+    cutting zone around the tool tip."""
     import meshio  # here, so that forces.png does not need meshio
     mesh = meshio.read(path)
     field_time = mesh.field_data.get("TimeValue") if hasattr(mesh, "field_data") else None
@@ -248,7 +250,11 @@ def plot_snapshot(result_dir, index, time_s, path, tool, process, material):
     else:
         tip = np.array([pts[:, 0].max(), pts[:, 1].max() - t0])
     surface_y = tip[1] + t0
-    window = view_window(tip, t0, pts[body >= 0], surface_y)
+    return mesh, time_s, view_window(tip, t0, pts[body >= 0], surface_y)
+
+
+def plot_snapshot(result_dir, index, time_s, path, tool, process, material):
+    mesh, time_s, window = load_snapshot(path, tool, process, time_s)
     um = 1e6
     process_line, time_line = case_caption(process, time_s, tool)
     aspect = (window[3] - window[2]) / (window[1] - window[0])

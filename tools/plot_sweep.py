@@ -6,7 +6,10 @@ Writes into SWEEP_DIR (docs/results.md):
   forces_vs_speed.png  mean cutting (solid) and thrust (dashed) force per unit width vs cutting speed, one colour per feed;
   chip_vs_speed.png    segment pitch (µm) and segmentation degree vs cutting speed, one colour per feed
                        (panels say so when the chip analysis gave no values);
-  chip_map.png         speed x feed map of the chip type, coloured cells with labels.
+  chip_map.png         speed x feed map of the chip type, coloured cells with labels;
+  chip_gallery_damage.png, chip_gallery_temperature.png
+                       the final chip of every case (rows: feeds, columns: speeds) coloured by damage and by
+                       temperature on one colour scale, the tool drawn (needs meshio; skipped without it).
 Cases that did not complete are drawn as crosses at the bottom of the force plot and as grey cells.
 """
 import os
@@ -148,6 +151,48 @@ def plot_chip_map(d, rows, feeds, speeds):
     ps.save(fig, os.path.join(d, "chip_map.png"))
 
 
+def plot_chip_gallery(d, rows, feeds, speeds, key):
+    """The last snapshot of every complete case side by side, one colour scale for all panels."""
+    import plot_result as pr
+    by_cell = {(ps.to_float(r["speed_m_per_s"]), ps.to_float(r["feed_mm"])): r for r in rows}
+    fig, axes = plt.subplots(len(feeds), len(speeds), figsize=(2.5 * len(speeds) + 0.8, 2.3 * len(feeds) + 0.5),
+                             squeeze=False, layout="constrained")
+    drawn = []  # (collection, values, material)
+    for j, f in enumerate(reversed(feeds)):  # the thickest feed on top, as in chip_map.png
+        for i, v in enumerate(speeds):
+            ax = axes[j][i]
+            r = by_cell.get((v, f))
+            entries = pr.read_pvd(os.path.join(d, r["case"])) if r and r["status"] == "complete" else []
+            if not entries:
+                ax.axis("off")
+                ax.text(0.5, 0.5, f"{v:g} m/s, h = {f:g} mm\n{r['status'] if r else 'not run'}", ha="center",
+                        va="center", transform=ax.transAxes, fontsize=8)
+                continue
+            case_dir = os.path.join(d, r["case"])
+            scene, tool, process = pr.read_scene(case_dir)
+            material = (scene.get("material") or [{}])[0]
+            _, time_s, path = entries[-1]
+            mesh, time_s, window = pr.load_snapshot(path, tool, process, time_s)
+            coll, values = pr.draw_field(ax, fig, key, mesh, tool, time_s, window, process, material, 1e6,
+                                         colorbar=False)
+            drawn.append((coll, values, material))
+            ax.set_title(f"{v:g} m/s ({v * 60:g} m/min), h = {f:g} mm\n{r.get('chip_classification') or 'n/a'}",
+                         fontsize=7.5)
+    if not drawn:
+        plt.close(fig)
+        return
+    if key == "temperature":  # one scale: from the initial temperature to the highest 99.8th percentile
+        lo = min(c.get_clim()[0] for c, _, _ in drawn)
+        hi = max(c.get_clim()[1] for c, _, _ in drawn)
+        for c, _, _ in drawn:
+            c.set_clim(lo, hi)
+    _, label, _ = pr.FIELDS[key]
+    fig.colorbar(drawn[-1][0], ax=axes, fraction=0.025, pad=0.01, label=label)
+    what = {"damage": "damage D", "temperature": "temperature", "plastic_strain": "equivalent plastic strain"}[key]
+    fig.suptitle(f"Final chips of the sweep coloured by {what}", fontsize=9.5)
+    ps.save(fig, os.path.join(d, f"chip_gallery_{key}.png"))
+
+
 def main(argv):
     if len(argv) != 1:
         print(__doc__, file=sys.stderr)
@@ -163,6 +208,13 @@ def main(argv):
     plot_forces(d, rows, feeds, by_feed, speeds)
     plot_chip_metrics(d, rows, feeds, by_feed, speeds)
     plot_chip_map(d, rows, feeds, speeds)
+    try:
+        import meshio  # noqa: F401  (the gallery reads the VTU snapshots)
+    except ImportError:
+        print("note: no meshio: no chip galleries", file=sys.stderr)
+        return 0
+    for key in ("damage", "temperature"):
+        plot_chip_gallery(d, rows, feeds, speeds, key)
     return 0
 
 

@@ -192,6 +192,12 @@ ChipAnalysis analyze_chip(const Particles& p, const ChipAnalysisSetup& s) {
   }
 
   // --- Classification ------------------------------------------------------------------------
+  a.cells_per_feed = t0 / s.cell_size_m;
+  if (a.cells_per_feed < th.resolved_cells_per_feed)
+    a.resolution_note = fmt::format(
+        "t0 is {:.1f} cells: below {:g} cells across the uncut chip, shear bands and segments are not resolved and "
+        "a serrated profile can be particle roughness; read the classification as indicative",
+        a.cells_per_feed, th.resolved_cells_per_feed);
   if (a.chip_particles < a.significant_piece_particles) {
     a.classification = "none";
   } else if (a.pieces >= 2) {
@@ -306,6 +312,8 @@ nlohmann::json chip_json(const ChipAnalysis& a) {
   j["time_s"] = a.time_s;
   j["tool_travel_m"] = a.tool_travel_m;
   j["classification"] = a.classification;
+  j["cells_across_uncut_chip"] = a.cells_per_feed;
+  j["resolution_note"] = a.resolution_note.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.resolution_note);
   j["particles"] = a.chip_particles;
   j["mass_kg_per_m"] = a.chip_mass_kg_per_m;
   j["pieces"] = a.pieces;
@@ -368,6 +376,7 @@ std::string chip_summary_text(const ChipAnalysis& a) {
   s += fmt::format("  temperature: max {} K, primary shear zone {} K, tool-chip interface {} K\n",
                    num(a.max_temperature_K, "{:.0f}"), num(a.primary_shear_zone.max_K, "{:.0f}"),
                    num(a.tool_chip_interface.max_K, "{:.0f}"));
+  if (!a.resolution_note.empty()) s += "  note: " + a.resolution_note + "\n";
   return s;
 }
 

@@ -42,6 +42,7 @@ struct ChipThresholds {
   double shear_zone_depth_t0 = 3.0;        // primary shear zone region: within this * t0 ahead of the rake face
   double shear_zone_overshoot_t0 = 0.25;   // ... and up to this * t0 above the uncut surface
   double interface_distance_cells = 1.0;   // tool-chip interface: within this many h of the tool
+  double resolved_cells_per_feed = 8.0;    // fewer cells across t0: segments are not resolved (a note says so)
 };
 
 // The geometry of the cut at the analysed instant.
@@ -82,6 +83,8 @@ struct ChipAnalysis {
   std::size_t chip_particles = 0;
   double chip_mass_kg_per_m = 0.0;
   std::string classification;           // none, continuous, serrated, discontinuous
+  double cells_per_feed = 0.0;          // t0 / h: how well the grid resolves the chip
+  std::string resolution_note;          // non-empty when t0/h is below the resolved threshold
   std::size_t pieces = 0;               // significant pieces
   std::vector<std::size_t> piece_particles;  // particles per significant piece, largest first
   std::size_t fragment_particles = 0;   // chip particles in pieces too small to count (incl. failed ones)

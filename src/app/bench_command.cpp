@@ -14,6 +14,7 @@
 #include "core/simulation.hpp"
 #include "cutting/cutting_scene.hpp"
 #include "io/material_library.hpp"
+#include "io/scene_parser.hpp"
 
 namespace mpmcut {
 
@@ -184,21 +185,13 @@ void bench_plastic(const BenchOptions& o) {
   }
 }
 
-// cases/ti64_quick.toml through the cutting preset. One simulation: warmed up (at the smallest thread
-// count: results do not depend on it, and on a busy machine it is the one that suffers least) until the tool has travelled half the uncut chip thickness past first contact so the chip has
-// started to form, then timed for `cutting_steps` steps at each thread count in turn.
+// The default cut (cases/ti64_default.toml, what `mpmcut run` runs with no case). One simulation: warmed
+// up (at the smallest thread count: results do not depend on it, and on a busy machine it is the one that
+// suffers least) until the tool has travelled half the uncut chip thickness past first contact so the
+// chip has started to form, then timed for `cutting_steps` steps at each thread count in turn.
 void bench_cutting(const BenchOptions& o) {
-  CuttingParameters c;  // = cases/ti64_quick.toml
-  c.material = "ti64-johnson-1985";
-  c.cutting_speed = 20.0;
-  c.uncut_chip_thickness = 0.1e-3;
-  c.cut_length = 0.2e-3;
-  c.rake_angle_deg = 0.0;
-  c.clearance_angle_deg = 11.0;
-  c.edge_radius = 5e-6;
-  c.friction = 0.35;
-  c.cell_size = 10e-6;
-  const Scene scene = build_cutting_scene(c, library_ti64());
+  const Scene scene = default_cutting_scene();
+  const CuttingParameters& c = *scene.cutting;
   const int warmup_threads = *std::min_element(o.threads.begin(), o.threads.end());
   omp_set_num_threads(warmup_threads);
   Simulation sim(scene);
@@ -213,7 +206,7 @@ void bench_cutting(const BenchOptions& o) {
     return n;
   };
   std::cout << fmt::format(
-      "cutting (cases/ti64_quick.toml: V = {} m/s, t0 = {} um, h = {} um, friction {}), warm-up {} steps "
+      "cutting (the default cut, cases/ti64_default.toml: V = {} m/s, t0 = {} um, h = {} um, friction {}), warm-up {} steps "
       "to {:.0f} um tool travel ({:.1f} s at {} threads), then {} timed steps per thread count:\n",
       c.cutting_speed, c.uncut_chip_thickness * 1e6, c.cell_size * 1e6, c.friction, sim.step_count(),
       sim.time() * c.cutting_speed * 1e6, warmup_wall, warmup_threads, o.cutting_steps);

@@ -33,6 +33,8 @@ int main(int argc, char** argv) {
   run->add_option("-s,--set", overrides, "Override an input key, e.g. --set solver.cfl=0.3 (repeatable)");
   run->add_flag("-f,--force", run_options.force, "Overwrite an existing result directory");
   run->add_flag("--no-progress", no_progress, "Do not print progress");
+  bool no_plots = false;
+  run->add_flag("--no-plots", no_plots, "Do not draw the PNG pictures at the end of a cutting run");
   // Checkpoints (docs/reliability.md): a step count or a wall time.
   const auto checkpoint_check = [](const std::string& text) -> std::string {
     try {
@@ -105,5 +107,15 @@ int main(int argc, char** argv) {
   run_options.out_dir = out_dir;
   run_options.progress = !no_progress;
   run_options.checkpoint_every = parse_checkpoint_interval(checkpoint_every);
-  return run_case(scene, run_options);
+  const int code = run_case(scene, run_options);
+  // A complete cut gets its pictures (chip fields, forces) as `mpmcut plot` draws them; a missing or
+  // failing plotter is a warning, never a failed run.
+  if (code == 0 && scene.cutting && !no_plots) {
+    std::string why;
+    if (!python_plotting_available(true, why))
+      std::cerr << "warning: no pictures (" << why << "); the results are complete\n";
+    else if (const int plot = run_python_tool("plot_result.py", {out_dir, "--snapshots", "last"}); plot != 0)
+      std::cerr << "warning: plot_result.py failed (exit status " << plot << "); the results are complete\n";
+  }
+  return code;
 }

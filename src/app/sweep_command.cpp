@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/plot_command.hpp"
+#include "io/scene_parser.hpp"
 #include "io/atomic_file.hpp"
 
 namespace mpmcut {
@@ -337,6 +338,15 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
   }
   const fs::path out = o.out_dir.empty() ? fs::path("results") / ("sweep_" + fs::path(o.case_file).stem().string())
                                          : fs::path(o.out_dir);
+  std::vector<double> feeds_m = o.feeds_m;
+  if (feeds_m.empty()) {  // the case's own feed (load_scene also checks the case before anything runs)
+    const Scene scene = load_scene(o.case_file, o.overrides);
+    if (!scene.cutting) {
+      std::cerr << "error: " << o.case_file << " has no [cutting] table: sweep needs a cutting case\n";
+      return 2;
+    }
+    feeds_m = {scene.cutting->uncut_chip_thickness};
+  }
   fs::create_directories(out / "logs");
   const int jobs = o.jobs > 0 ? o.jobs : std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / o.threads);
 
@@ -346,7 +356,7 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
   };
   std::vector<Case> cases;
   std::vector<ChildRun> runs;
-  for (double h : o.feeds_m)
+  for (double h : feeds_m)
     for (double v : o.speeds_m_per_s) {
       const std::string name = fmt::format("v{:g}mps_h{:g}mm", v, h * 1e3);
       cases.push_back({v, h, out / name});
@@ -363,7 +373,7 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
     }
   std::cout << fmt::format("mpmcut sweep: {} cases ({} speeds x {} feeds) from {}, at most {} at a time, each with "
                            "--threads {} (change with --jobs/--threads); results in {}\n",
-                           runs.size(), o.speeds_m_per_s.size(), o.feeds_m.size(), o.case_file, jobs, o.threads,
+                           runs.size(), o.speeds_m_per_s.size(), feeds_m.size(), o.case_file, jobs, o.threads,
                            out.string())
             << std::flush;
   const bool completed = run_children(runs, jobs, true);
@@ -447,8 +457,9 @@ void add_sweep_command(CLI::App& app) {
   sweep->add_option("case", o->case_file, "Cutting case file (TOML with a [cutting] table)")->required();
   sweep->add_option("--speeds", o->speeds_m_per_s, "Cutting speeds in m/s, comma separated, e.g. 2,5,10,20,50,100")
       ->required()->delimiter(',')->check(CLI::PositiveNumber);
-  sweep->add_option("--feeds", o->feeds_m, "Uncut chip thicknesses (feeds) in m, comma separated, e.g. 0.05e-3,0.1e-3")
-      ->required()->delimiter(',')->check(CLI::PositiveNumber);
+  sweep->add_option("--feeds", o->feeds_m,
+                    "Uncut chip thicknesses (feeds) in m, comma separated, e.g. 0.05e-3,0.1e-3 (default: the case's own)")
+      ->delimiter(',')->check(CLI::PositiveNumber);
   sweep->add_option("-j,--jobs", o->jobs, "Cases run at the same time (default: cores / threads)")->check(CLI::Range(1, 1024));
   sweep->add_option("-t,--threads", o->threads, "OpenMP threads of each case (default: 1)")->check(CLI::Range(1, 1024));
   sweep->add_option("-o,--out", o->out_dir, "Sweep directory (default: results/sweep_<case name>)");

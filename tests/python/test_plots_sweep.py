@@ -2,6 +2,7 @@
 
 usage: /usr/bin/python3 test_plots_sweep.py MPMCUT_BINARY SCRATCH_DIR
 Checks: the sweep exits 0; sweep.csv has one row per case, each complete with finite forces; sweep.md exists;
+the chip galleries are drawn; every run drew its own pictures;
 forces_vs_speed.png, chip_vs_speed.png and chip_map.png are non-trivial PNGs; `mpmcut plot` writes forces.png and
 the chip pictures (temperature, plastic strain, damage, combined) of the last snapshot, all non-trivial.
 """
@@ -37,7 +38,8 @@ def main(binary, scratch):
         f.write(CASE)
     out = os.path.join(scratch, "sweep")
     t0 = time.time()
-    p = subprocess.run([binary, "sweep", case, "--speeds", "20,50", "--feeds", "0.1e-3", "--jobs", "2", "--out", out],
+    # No --feeds: the case's own uncut chip thickness (0.1 mm) is the feed.
+    p = subprocess.run([binary, "sweep", case, "--speeds", "20,50", "--jobs", "2", "--out", out],
                        capture_output=True, text=True, timeout=300)
     print(p.stdout, p.stderr, sep="\n")
     if p.returncode != 0:
@@ -61,9 +63,18 @@ def main(binary, scratch):
         fail("sweep.md missing")
     for name in ("forces_vs_speed.png", "chip_vs_speed.png", "chip_map.png"):
         check_png(os.path.join(out, name))
+    for name in ("chip_gallery_damage.png", "chip_gallery_temperature.png"):
+        check_png(os.path.join(out, name), min_colours=40)
 
-    # Pictures of one case.
+    # Every complete cutting run draws its pictures at the end (run --no-plots would skip them).
     case_dir = os.path.join(out, "v20mps_h0.1mm")
+    pictures = sorted(n for n in os.listdir(case_dir) if n.endswith(".png"))
+    if "forces.png" not in pictures or not any(n.startswith("chip_") for n in pictures):
+        fail(f"the run drew no pictures: {pictures}")
+    for n in pictures:
+        os.remove(os.path.join(case_dir, n))
+
+    # Pictures of one case, again, by the plot command.
     t0 = time.time()
     p = subprocess.run([binary, "plot", case_dir], capture_output=True, text=True, timeout=300)
     print(p.stdout, p.stderr, sep="\n")

@@ -90,6 +90,21 @@ TEST(ChipAnalysis, StraightChipIsContinuousWithItsThicknessRatio) {
   EXPECT_FALSE(a.segmentation_frequency_Hz.has_value());
 }
 
+// t0/h = 10 cells is resolved (no note); the same chip analysed as if on a 6-cell grid gets the note.
+TEST(ChipAnalysis, UnderResolvedChipCarriesANote) {
+  ChipAnalysisSetup s = synthetic_setup();
+  const auto chip = chip_particles_of(1e-3, [](double) { return 150e-6; });
+  const ChipAnalysis fine = analyze_chip(chip, s);
+  EXPECT_DOUBLE_EQ(fine.cells_per_feed, 10.0);
+  EXPECT_TRUE(fine.resolution_note.empty());
+  EXPECT_TRUE(chip_json(fine)["resolution_note"].is_null());
+  s.cell_size_m = kT0 / 6.0;
+  const ChipAnalysis coarse = analyze_chip(chip, s);
+  EXPECT_NEAR(coarse.cells_per_feed, 6.0, 1e-12);
+  EXPECT_NE(coarse.resolution_note.find("6.0 cells"), std::string::npos) << coarse.resolution_note;
+  EXPECT_EQ(chip_json(coarse)["resolution_note"], coarse.resolution_note);
+}
+
 TEST(ChipAnalysis, SawtoothChipIsSerrated) {
   const ChipAnalysisSetup s = synthetic_setup();
   const double h = 80e-6, H = 160e-6, pitch = 100e-6;
