@@ -3,7 +3,7 @@
 //   elastic  - an elastic Ti-6Al-4V-like block with a smooth velocity field (transfers + grid, cheap stress);
 //   plastic  - a Ti-6Al-4V Johnson-Cook block (heating, damage) in sustained pure shear: every particle
 //              flows plastically in the timed steps (the fraction is measured and printed);
-//   cutting  - cases/ti64_quick.toml built by the cutting preset, timed after the chip has started to form.
+//   cutting  - the default cut (cases/ti64_default.toml), timed after the chip has started to form.
 // Each reports wall-clock and CPU-time rates (the CPU figure is less sensitive to a shared machine).
 #include <string>
 #include <vector>

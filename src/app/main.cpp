@@ -67,7 +67,7 @@ int main(int argc, char** argv) {
 
   BenchOptions bench_options;
   CLI::App* bench = app.add_subcommand(
-      "bench", "Measure particle-steps per second: elastic block, all-plastic Ti-6Al-4V block, quick cutting case");
+      "bench", "Measure particle-steps per second: elastic block, all-plastic Ti-6Al-4V block, the default cut");
   bench->add_option("--particles", bench_options.particles, "Approximate particle count")->check(CLI::Range(100L, 100000000L));
   bench->add_option("--steps", bench_options.steps, "Timed steps")->check(CLI::Range(1, 1000000));
   bench->add_option("--threads", bench_options.threads, "Thread counts to measure (default: 1 2)");
