@@ -12,7 +12,6 @@
 #include <fmt/format.h>
 
 #include "core/simulation.hpp"
-#include "cutting/cutting_scene.hpp"
 #include "io/material_library.hpp"
 #include "io/scene_parser.hpp"
 
