@@ -31,6 +31,7 @@ struct Particles {
   std::vector<double> damage;               // D in [0, 1], -
   std::vector<double> plastic_displacement; // u_pl after initiation, m
   std::vector<double> initiation_yield_stress;  // sigma_y0 at initiation, Pa
+  std::vector<double> fracture_energy;          // G_f fixed at initiation (rate-dependent), J/m^2
   // Identity
   std::vector<std::int32_t> body;      // index into Scene::bodies
   std::vector<std::int32_t> material;  // index into the material list

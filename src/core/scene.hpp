@@ -54,7 +54,12 @@ struct MaterialParameters {
   double min_failure_strain = 0.01;  // clamp for eps_f, -
   // Hillerborg evolution after initiation
   DamageEvolution damage_evolution = DamageEvolution::Linear;
-  double fracture_energy = 0.0;   // G_f, J/m^2 (or from K_IC)
+  double fracture_energy = 0.0;   // G_f, J/m^2 (or from K_IC); the low-rate value when rate-dependent
+  // Ductile-to-brittle transition of the fracture energy with the plastic strain rate at initiation:
+  // G_f(rate) = G_b + (G_f - G_b) / (1 + (rate/rate_t)^n)   (theory_materials.md §5.6)
+  double fracture_energy_brittle = 0.0;          // G_b, J/m^2 (high-rate limit)
+  double fracture_transition_strain_rate = 0.0;  // rate_t, 1/s (0: G_f does not depend on rate)
+  double fracture_transition_exponent = 2.0;     // n, -
   double max_damage = 0.999;      // D at which a particle counts as fully failed, -
 
   double bulk_modulus() const { return youngs_modulus / (3.0 * (1.0 - 2.0 * poisson_ratio)); }

@@ -62,6 +62,14 @@ void validate_material(TableReader& t, const MaterialParameters& m) {
     t.check("fracture_energy", m.fracture_energy > 0.0, "> 0 (J/m^2) when damage = true", m.fracture_energy);
   }
   t.check("fracture_energy", m.fracture_energy >= 0.0, ">= 0 (J/m^2)", m.fracture_energy);
+  t.check("fracture_transition_strain_rate", m.fracture_transition_strain_rate >= 0.0,
+          ">= 0 (1/s; 0 = fracture energy independent of rate)", m.fracture_transition_strain_rate);
+  if (m.fracture_transition_strain_rate > 0.0) {
+    t.check("fracture_energy_brittle", m.fracture_energy_brittle > 0.0,
+            "> 0 (J/m^2, the high-rate fracture energy) when fracture_transition_strain_rate > 0",
+            m.fracture_energy_brittle);
+    t.check("fracture_transition_exponent", m.fracture_transition_exponent > 0.0, "> 0", m.fracture_transition_exponent);
+  }
   t.check("max_damage", m.max_damage > 0.0 && m.max_damage <= 1.0, "in (0, 1]", m.max_damage);
 }
 
@@ -125,6 +133,9 @@ MaterialParameters read_material(TableReader& t, const MaterialLibrary& library)
       "damage_evolution", {{"linear", DamageEvolution::Linear}, {"exponential", DamageEvolution::Exponential}},
       m.damage_evolution);
   m.fracture_energy = t.number("fracture_energy", m.fracture_energy);
+  m.fracture_energy_brittle = t.number("fracture_energy_brittle", m.fracture_energy_brittle);
+  m.fracture_transition_strain_rate = t.number("fracture_transition_strain_rate", m.fracture_transition_strain_rate);
+  m.fracture_transition_exponent = t.number("fracture_transition_exponent", m.fracture_transition_exponent);
   m.max_damage = t.number("max_damage", m.max_damage);
   // Toughness is what handbooks give; the damage law needs the energy. Converted with the final
   // E and nu of this material (after library overrides).

@@ -87,6 +87,9 @@ void write_material(const MaterialParameters& m, std::ostream& out) {
   out << "damage_evolution = \"" << (m.damage_evolution == DamageEvolution::Exponential ? "exponential" : "linear")
       << "\"\n";
   line("fracture_energy", m.fracture_energy);
+  line("fracture_energy_brittle", m.fracture_energy_brittle);
+  line("fracture_transition_strain_rate", m.fracture_transition_strain_rate);
+  line("fracture_transition_exponent", m.fracture_transition_exponent);
   line("max_damage", m.max_damage);
 }
 

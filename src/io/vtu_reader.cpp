@@ -189,6 +189,7 @@ VtuSnapshot read_particles_vtu(const std::filesystem::path& file) {
   scalar(r, "damage_initiation", p.damage_initiation);
   scalar(r, "damage", p.damage);
   scalar(r, "plastic_displacement_m", p.plastic_displacement);
+  scalar(r, "fracture_energy_J_per_m2", p.fracture_energy);
   p.body = r.array<std::int32_t>("body_id", "Int32", 1, n);
   p.material = r.array<std::int32_t>("material_id", "Int32", 1, n);
 

@@ -17,7 +17,9 @@ JohnsonCookDamage::JohnsonCookDamage(const MaterialParameters& p)
       min_failure_strain_(p.min_failure_strain),
       evolution_(p.damage_evolution),
       fracture_energy_(p.fracture_energy),
-      inverse_fracture_energy_(p.fracture_energy > 0.0 ? 1.0 / p.fracture_energy : 0.0),
+      brittle_fracture_energy_(p.fracture_energy_brittle),
+      transition_rate_(p.fracture_transition_strain_rate),
+      transition_exponent_(p.fracture_transition_exponent),
       max_damage_(p.max_damage) {
   if (!enabled_) return;
   const std::string who = "material '" + p.name + "' (damage): ";
@@ -26,6 +28,13 @@ JohnsonCookDamage::JohnsonCookDamage(const MaterialParameters& p)
   if (!(fracture_energy_ >= 0.0))
     throw std::invalid_argument(who + "need fracture energy G_f >= 0, got " + std::to_string(fracture_energy_) +
                                 " J/m^2");
+  if (!(transition_rate_ >= 0.0))
+    throw std::invalid_argument(who + "need fracture_transition_strain_rate >= 0, got " +
+                                std::to_string(transition_rate_) + " 1/s");
+  if (transition_rate_ > 0.0 && !(brittle_fracture_energy_ > 0.0 && transition_exponent_ > 0.0))
+    throw std::invalid_argument(who + "a rate-dependent fracture energy needs fracture_energy_brittle > 0 and "
+                                "fracture_transition_exponent > 0, got " + std::to_string(brittle_fracture_energy_) +
+                                " J/m^2 and " + std::to_string(transition_exponent_));
   if (!(max_damage_ > 0.0 && max_damage_ <= 1.0))
     throw std::invalid_argument(who + "need 0 < max_damage <= 1, got " + std::to_string(max_damage_));
 }
@@ -38,8 +47,14 @@ double JohnsonCookDamage::failure_strain(double eta, double log_rate_ratio, doub
   return ef >= min_failure_strain_ ? ef : min_failure_strain_;  // (a NaN also falls back to the minimum)
 }
 
+double JohnsonCookDamage::fracture_energy(double rate) const {
+  if (!(transition_rate_ > 0.0)) return fracture_energy_;
+  const double x = rate > 0.0 ? std::pow(rate / transition_rate_, transition_exponent_) : 0.0;
+  return brittle_fracture_energy_ + (fracture_energy_ - brittle_fracture_energy_) / (1.0 + x);
+}
+
 DamageStep JohnsonCookDamage::advance(DamageState& s, double d_eps, double eps_f, double flow_stress,
-                                      double length) const {
+                                      double length, double rate) const {
   DamageStep step;
   step.damage_before = s.damage;
   if (s.damage >= max_damage_) {
@@ -62,8 +77,9 @@ DamageStep JohnsonCookDamage::advance(DamageState& s, double d_eps, double eps_f
     s.initiation = 1.0;
     s.initiation_yield_stress = flow_stress;
     s.plastic_displacement = 0.0;
+    s.fracture_energy = fracture_energy(rate);
     step.initiated_now = true;
-    if (fracture_energy_ <= 0.0) {  // G_f = 0: instantaneous failure (not recommended, but defined)
+    if (s.fracture_energy <= 0.0) {  // G_f = 0: instantaneous failure (not recommended, but defined)
       s.damage = max_damage_;
       step.strain_after_initiation = after;
       step.failed = true;
@@ -89,11 +105,11 @@ void JohnsonCookDamage::evolve(DamageState& s, double du, double stress, DamageS
   s.plastic_displacement += du;
   double D;
   if (evolution_ == DamageEvolution::Linear) {
-    D = s.plastic_displacement * s.initiation_yield_stress * 0.5 * inverse_fracture_energy_;  // u_pl / u_f
+    D = s.plastic_displacement * s.initiation_yield_stress * 0.5 / s.fracture_energy;  // u_pl / u_f
   } else {
     // 1 - D = exp(-W/G_f) with W = int sigma_y du_pl: multiply the intact fraction by exp(-dW/G_f),
     // so no extra state is needed for W.
-    D = 1.0 - (1.0 - s.damage) * std::exp(-stress * du * inverse_fracture_energy_);
+    D = 1.0 - (1.0 - s.damage) * std::exp(-stress * du / s.fracture_energy);
   }
   if (D >= max_damage_) {
     D = max_damage_;

@@ -9,6 +9,9 @@
 //              volumetric opening of the tensile cut-off, see johnson_cook.hpp)
 //              linear:       D = u_pl/u_f,  u_f = 2 G_f/sigma_y0  (sigma_y0 = flow stress at initiation)
 //              exponential:  D = 1 - exp(-int sigma_y du_pl / G_f)  (sigma_y undamaged)
+//              G_f is fixed per particle at initiation from its plastic strain rate there:
+//              G_f(rate) = G_b + (G_f,low - G_b) / (1 + (rate/rate_t)^n), or G_f,low when rate_t = 0
+//              (a ductile-to-brittle transition of the shear fracture; theory_materials.md §5.6).
 //              D <= max_damage; D = max_damage means fully failed.
 // Degradation: sigma = (1 - D) s - p_eff I,  p_eff = p if p >= 0 (compression kept) else (1 - D) p;
 //              failed: s = 0, p_eff = max(p, 0).
@@ -23,6 +26,7 @@ struct DamageState {
   double damage = 0.0;                   // D, -
   double plastic_displacement = 0.0;     // u_pl since initiation, m
   double initiation_yield_stress = 0.0;  // sigma_y0, Pa
+  double fracture_energy = 0.0;          // G_f of this particle, fixed at initiation, J/m^2
 };
 
 // What one plastic increment did to the damage state.
@@ -46,16 +50,21 @@ class JohnsonCookDamage {
   // JC failure strain. log_rate_ratio = max(ln(epsdot/epsdot0), 0), homologous_temperature in [0, 1].
   double failure_strain(double triaxiality, double log_rate_ratio, double homologous_temperature) const;
 
+  // G_f at a plastic strain rate (1/s), J/m^2: the material's fracture_energy when it does not
+  // depend on rate, else the ductile-to-brittle transition law above.
+  double fracture_energy(double plastic_strain_rate) const;
+
   // u_f = 2 G_f / sigma_y0 of the linear law, m.
-  double failure_displacement(double initiation_yield_stress) const {
-    return 2.0 * fracture_energy_ / initiation_yield_stress;
+  static double failure_displacement(double fracture_energy, double initiation_yield_stress) {
+    return 2.0 * fracture_energy / initiation_yield_stress;
   }
 
   // Advances omega, u_pl and D over a plastic increment d_eps_p > 0. failure_strain is used only
   // while omega < 1; the increment is split exactly at omega = 1 so that initiation happens at
-  // eps_p = eps_f for a constant eps_f. flow_stress = current undamaged sigma_y; length = L.
+  // eps_p = eps_f for a constant eps_f. flow_stress = current undamaged sigma_y; length = L;
+  // plastic_strain_rate sets G_f when initiation happens in this increment.
   DamageStep advance(DamageState& state, double d_eps_p, double failure_strain, double flow_stress,
-                     double length_m) const;
+                     double length_m, double plastic_strain_rate) const;
 
   // Crack opening after initiation (mode I): the volumetric strain d_opening that the tensile
   // cut-off of JohnsonCookMaterial turned into opening drives u_pl as plastic strain does,
@@ -70,7 +79,10 @@ class JohnsonCookDamage {
   double D1_, D2_, D3_, D4_, D5_;
   double min_failure_strain_;
   DamageEvolution evolution_;
-  double fracture_energy_, inverse_fracture_energy_;
+  double fracture_energy_;          // G_f (low-rate value when rate-dependent), J/m^2
+  double brittle_fracture_energy_;  // G_b, J/m^2
+  double transition_rate_;          // rate_t, 1/s (0: rate-independent)
+  double transition_exponent_;      // n
   double max_damage_;
 };
 

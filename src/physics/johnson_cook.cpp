@@ -168,7 +168,8 @@ ConstitutiveIncrement JohnsonCookMaterial::update(Particles& p, std::size_t i, c
   double before = dep, after = 0.0;  // plastic increment before / after initiation
   bool failed = failed0;
   if (damage_.enabled() && !failed0 && (dep > 0.0 || opening > 0.0)) {
-    DamageState st{p.damage_initiation[i], D0, p.plastic_displacement[i], p.initiation_yield_stress[i]};
+    DamageState st{p.damage_initiation[i], D0, p.plastic_displacement[i], p.initiation_yield_stress[i],
+                   p.fracture_energy[i]};
     // Hillerborg length: the cell size, stretched with the particle (J = V/V0). An opening band
     // thickens normal to the crack only, so L J is its current thickness and L J d(eps) its opening;
     // then each particle dissipates G_f V0/L whatever its stretch. In shear bands J ~ 1.
@@ -179,7 +180,7 @@ ConstitutiveIncrement JohnsonCookMaterial::update(Particles& p, std::size_t i, c
         if (!log_rate_known) log_rate = flow_.log_rate_ratio(rate);
         eps_f = damage_.failure_strain(stress_triaxiality(pressure, q), log_rate, flow_.homologous_temperature(T));
       }
-      const DamageStep ds = damage_.advance(st, dep, eps_f, q, band_length);
+      const DamageStep ds = damage_.advance(st, dep, eps_f, q, band_length, rate);
       before = ds.strain_before_initiation;
       after = ds.strain_after_initiation;
       failed = ds.failed;
@@ -189,6 +190,7 @@ ConstitutiveIncrement JohnsonCookMaterial::update(Particles& p, std::size_t i, c
     p.damage[i] = st.damage;
     p.plastic_displacement[i] = st.plastic_displacement;
     p.initiation_yield_stress[i] = st.initiation_yield_stress;
+    p.fracture_energy[i] = st.fracture_energy;
     D = st.damage;
   }
 

@@ -60,7 +60,7 @@ TEST(JohnsonCookDamage, InitiationAtFailureStrainForFixedTriaxiality) {
     double eps = 0.0, eps_at_initiation = -1.0;
     const double de = 7.3e-4;
     while (eps < 2.0 * ef) {
-      const DamageStep step = d.advance(s, de, ef, 1.0e9, 5e-6);
+      const DamageStep step = d.advance(s, de, ef, 1.0e9, 5e-6, 0.0);
       if (step.initiated_now) eps_at_initiation = eps + step.strain_before_initiation;
       EXPECT_NEAR(step.strain_before_initiation + step.strain_after_initiation, de, 1e-18);
       eps += de;
@@ -80,15 +80,16 @@ TEST(JohnsonCookDamage, LinearHillerborgLaw) {
   m.max_damage = 1.0;
   const JohnsonCookDamage d(m);
   const double sy0 = 1.0e9, L = 5e-6, uf = 2 * 2.0e4 / sy0;
-  EXPECT_DOUBLE_EQ(d.failure_displacement(sy0), uf);
+  EXPECT_DOUBLE_EQ(JohnsonCookDamage::failure_displacement(d.fracture_energy(1e6), sy0), uf);
   DamageState s;
   s.initiation = 1.0;
   s.initiation_yield_stress = sy0;
+  s.fracture_energy = 2.0e4;
   const int n = 4000;
   const double de = uf / L / n;  // reaches u_f in n increments
   double work = 0.0;             // int (1 - D) sigma_y du, midpoint rule (exact for linear D)
   for (int k = 0; k < n; ++k) {
-    const DamageStep step = d.advance(s, de, 0.0, sy0, L);
+    const DamageStep step = d.advance(s, de, 0.0, sy0, L, 0.0);
     work += (1.0 - 0.5 * (step.damage_before + s.damage)) * sy0 * L * de;
     EXPECT_NEAR(s.damage, std::min(s.plastic_displacement / uf, 1.0), 1e-12);
     if (k < n - 2) EXPECT_FALSE(step.failed);
@@ -102,14 +103,15 @@ TEST(JohnsonCookDamage, LinearHillerborgLaw) {
   DamageState c;
   c.initiation = 1.0;
   c.initiation_yield_stress = sy0;
+  c.fracture_energy = 2.0e4;
   DamageStep last;
-  while (!(last = capped.advance(c, de, 0.0, sy0, L)).failed) {
+  while (!(last = capped.advance(c, de, 0.0, sy0, L, 0.0)).failed) {
   }
   EXPECT_EQ(c.damage, 0.999);
   EXPECT_NEAR(c.plastic_displacement, 0.999 * uf, 1.01 * L * de);
   // a failed particle does not change any more
   const DamageState frozen = c;
-  EXPECT_TRUE(capped.advance(c, de, 0.0, sy0, L).failed);
+  EXPECT_TRUE(capped.advance(c, de, 0.0, sy0, L, 0.0).failed);
   EXPECT_EQ(c.plastic_displacement, frozen.plastic_displacement);
 }
 
@@ -119,11 +121,12 @@ TEST(JohnsonCookDamage, ExponentialHillerborgLaw) {
   const JohnsonCookDamage d(ti64_damage(DamageEvolution::Exponential, 1.0e4));
   DamageState s;
   s.initiation = 1.0;
+  s.fracture_energy = 1.0e4;
   const double L = 5e-6, de = 1e-3;
   double W = 0.0, work = 0.0;
   for (int k = 0; k < 100000; ++k) {
     const double sy = 1.0e9 * (1.0 + 0.3 * std::sin(1e-3 * k));  // any positive history
-    const DamageStep step = d.advance(s, de, 0.0, sy, L);
+    const DamageStep step = d.advance(s, de, 0.0, sy, L, 0.0);
     W += sy * L * de;
     // softening work int (1 - D) sigma_y du_pl, trapezoidal in D
     work += (1.0 - 0.5 * (s.damage + step.damage_before)) * sy * L * de;
@@ -135,12 +138,44 @@ TEST(JohnsonCookDamage, ExponentialHillerborgLaw) {
   EXPECT_NEAR(work, 0.999 * 1.0e4, 1e-4 * 1.0e4);
 }
 
+// theory §5.6: G_f(rate) = G_b + (G_f - G_b)/(1 + (rate/rate_t)^n): G_f at rest, the mean of G_f and G_b at
+// rate_t, G_b far above it, monotone in between; rate_t = 0 keeps G_f at every rate.
+TEST(JohnsonCookDamage, FractureEnergyDuctileToBrittleTransition) {
+  MaterialParameters m = ti64_damage(DamageEvolution::Linear, 15e3);
+  EXPECT_EQ(JohnsonCookDamage(m).fracture_energy(1e9), 15e3);  // rate-independent by default
+  m.fracture_energy_brittle = 5e3;
+  m.fracture_transition_strain_rate = 1e6;
+  m.fracture_transition_exponent = 3.0;
+  const JohnsonCookDamage d(m);
+  EXPECT_EQ(d.fracture_energy(0.0), 15e3);
+  EXPECT_NEAR(d.fracture_energy(1e6), 10e3, 1e-9);
+  EXPECT_NEAR(d.fracture_energy(2e6), 5e3 + 10e3 / 9.0, 1e-9);
+  EXPECT_NEAR(d.fracture_energy(1e9), 5e3, 1e-2);
+  double last = d.fracture_energy(1e3);
+  for (double r = 2e3; r < 1e9; r *= 2) {
+    EXPECT_LT(d.fracture_energy(r), last) << r;
+    last = d.fracture_energy(r);
+  }
+  // the rate at initiation fixes the particle's G_f: u_f = 2 G_f(rate)/sigma_y0, whatever the rate later
+  DamageState s;
+  s.initiation = 0.99;
+  d.advance(s, 0.02, 1.0, 1e9, 5e-6, 2e6);
+  EXPECT_EQ(s.initiation, 1.0);
+  EXPECT_NEAR(s.fracture_energy, 5e3 + 10e3 / 9.0, 1e-9);
+  const double uf = JohnsonCookDamage::failure_displacement(s.fracture_energy, 1e9);
+  while (!d.advance(s, 1e-3, 1.0, 1e9, 5e-6, 0.0).failed) EXPECT_NEAR(s.damage, s.plastic_displacement / uf, 1e-12);
+  EXPECT_NEAR(s.plastic_displacement, 0.999 * uf, 5e-9);
+  // bad constants are refused
+  m.fracture_energy_brittle = 0.0;
+  EXPECT_THROW(JohnsonCookDamage{m}, std::invalid_argument);
+}
+
 // G_f = 0: instantaneous failure at initiation (defined, not recommended).
 TEST(JohnsonCookDamage, ZeroFractureEnergyFailsAtInitiation) {
   const JohnsonCookDamage d(ti64_damage(DamageEvolution::Linear, 0.0));
   DamageState s;
   s.initiation = 0.999;
-  const DamageStep step = d.advance(s, 0.01, 0.1, 1e9, 5e-6);
+  const DamageStep step = d.advance(s, 0.01, 0.1, 1e9, 5e-6, 0.0);
   EXPECT_TRUE(step.initiated_now);
   EXPECT_TRUE(step.failed);
   EXPECT_EQ(s.damage, 0.999);

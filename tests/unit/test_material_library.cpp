@@ -57,6 +57,22 @@ TEST(MaterialLibrary, HasTheTi64JohnsonCookSetsWithPublishedConstants) {
   }
 }
 
+// The cutting calibration (docs/materials.md): the Johnson 1985 set with G_f 15 -> 5 kJ/m^2 around 2e6 1/s,
+// nothing else changed.
+TEST(MaterialLibrary, CuttingSetIsJohnson1985WithTheRateDependentFractureEnergy) {
+  const MaterialLibrary& lib = builtin_material_library();
+  const MaterialParameters* cut = lib.find("ti64-cutting");
+  ASSERT_NE(cut, nullptr);
+  MaterialParameters expected = *lib.find("ti64-johnson-1985");
+  expected.name = cut->name;
+  expected.citation = cut->citation;
+  expected.fracture_energy = 15e3;
+  expected.fracture_energy_brittle = 5e3;
+  expected.fracture_transition_strain_rate = 2e6;
+  expected.fracture_transition_exponent = 4.0;
+  EXPECT_TRUE(*cut == expected);
+}
+
 TEST(MaterialLibrary, HasGenericElasticSets) {
   const MaterialLibrary& lib = builtin_material_library();
   for (const char* name : {"elastic-unit", "elastic-steel", "elastic-aluminium", "elastic-tungsten-carbide"}) {
@@ -132,6 +148,31 @@ poisson_ratio = 0.0
         << e.what();
   }
   EXPECT_THROW(MaterialLibrary().add_file("[[material]]\nname = \"x\"\ndensity = -1.0\n", "bad.toml"), InputError);
+}
+
+// The rate-dependent fracture energy keys: read, and a transition without a brittle G_f is an error that
+// names the key.
+TEST(MaterialLibrary, RateDependentFractureEnergyKeys) {
+  const std::string base = R"([[material]]
+name = "ti"
+library = "ti64-lesuer-2000"
+fracture_energy = 15e3
+fracture_transition_strain_rate = 1.2e6
+)";
+  MaterialLibrary lib = builtin_material_library();
+  lib.add_file(base + "fracture_energy_brittle = 5e3\nfracture_transition_exponent = 3.0\n", "ok.toml");
+  const MaterialParameters* m = lib.find("ti");
+  ASSERT_NE(m, nullptr);
+  EXPECT_EQ(m->fracture_transition_strain_rate, 1.2e6);
+  EXPECT_EQ(m->fracture_energy_brittle, 5e3);
+  EXPECT_EQ(m->fracture_transition_exponent, 3.0);
+  try {
+    MaterialLibrary copy = builtin_material_library();
+    copy.add_file(base, "bad.toml");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("fracture_energy_brittle"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
