@@ -32,9 +32,10 @@ CHIP_COLORS = {
 
 def chip_color(label):
     low = (label or "").lower()
-    for key, color in CHIP_COLORS.items():
+    # Longest key first: "discontinuous" contains "continuous".
+    for key in sorted(CHIP_COLORS, key=len, reverse=True):
         if key in low:
-            return color
+            return CHIP_COLORS[key]
     return "#d0d0d0" if not low else "#9b8ec4"
 
 

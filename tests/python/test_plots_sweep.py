@@ -4,7 +4,8 @@ usage: /usr/bin/python3 test_plots_sweep.py MPMCUT_BINARY SCRATCH_DIR
 Checks: the sweep exits 0; sweep.csv has one row per case, each complete with finite forces; sweep.md exists;
 the chip galleries are drawn; every run drew its own pictures;
 forces_vs_speed.png, chip_vs_speed.png and chip_map.png are non-trivial PNGs; `mpmcut plot` writes forces.png and
-the chip pictures (temperature, plastic strain, damage, combined) of the last snapshot, all non-trivial.
+the chip pictures (temperature, plastic strain, damage, combined) of the last snapshot, all non-trivial; the chip
+map gives continuous, serrated and discontinuous chips three different colours.
 """
 import csv
 import os
@@ -91,7 +92,17 @@ def main(binary, scratch):
     p = subprocess.run([binary, "plot", os.path.join(scratch, "no_such_dir")], capture_output=True, text=True)
     if p.returncode == 0:
         fail("plot of a missing directory exited 0")
+    check_chip_colours()
     print("PASS")
+
+
+def check_chip_colours():
+    """The chip map colours each chip type by its own colour ("discontinuous" contains "continuous")."""
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+    import plot_sweep  # noqa: E402
+    colours = {t: plot_sweep.chip_color(t) for t in ("continuous", "serrated", "discontinuous")}
+    if len(set(colours.values())) != 3 or colours["discontinuous"] != plot_sweep.CHIP_COLORS["discontinuous"]:
+        fail(f"chip colours: {colours}")
 
 
 if __name__ == "__main__":
