@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include "analysis/chip_analysis.hpp"
 #include "app/plot_command.hpp"
 #include "app/sweep_command.hpp"
 #include "io/atomic_file.hpp"
@@ -70,9 +71,16 @@ struct Condition {
   CaseResult result;
 };
 
+// Cells across t0 of a condition's run: chip-type conditions need at least the chip analysis' resolved
+// count (below it segments are particle roughness: at t0/5 the 5 and 75 m/s chip types came out swapped).
+int condition_cells_per_feed(const Condition& c, int cells_per_feed) {
+  const int resolved = static_cast<int>(std::ceil(ChipThresholds{}.resolved_cells_per_feed));
+  return c.kind == "chip" ? std::max(cells_per_feed, resolved) : cells_per_feed;
+}
+
 std::string case_text(const Condition& c, bool quick, int cells_per_feed) {
   const double h = c.h_mm * 1e-3;
-  const double cell = quick ? 0.25 * h : h / cells_per_feed;
+  const double cell = quick ? 0.25 * h : h / condition_cells_per_feed(c, cells_per_feed);
   // --quick: four cells of tool travel (pipeline check, numbers not meaningful); full: 0.4 mm, long enough
   // for the preset's steady window (after >= 3 t0 of travel and 40 % of the cut).
   const double cut = quick ? 4.0 * cell : std::max(0.4e-3, 6.0 * h);
@@ -289,11 +297,12 @@ int run_validation(const ValidateOptions& o) {
     s << fmt::format("{} runs, {} complete, {} not complete{}.\n\n", conditions.size(), conditions.size() - failed,
                      failed, completed ? "" : " (interrupted)");
     if (!o.quick)
-      s << fmt::format("Resolution: cell = t0/{} ({} cells across the uncut chip), 2×2 particles per cell{}.\n\n",
+      s << fmt::format("Resolution: cell = t0/{} ({} cells across the uncut chip), 2×2 particles per cell{}; chip-type "
+                       "conditions at t0/{} (at least the {} cells the chip analysis needs to resolve segments).\n\n",
                        o.cells_per_feed, o.cells_per_feed,
-                       o.cells_per_feed < 10 ? " — coarser than the preset's t0/10: forces are indicative, chip "
-                                               "shapes under-resolved"
-                                             : "");
+                       o.cells_per_feed < 10 ? " — coarser than the preset's t0/10: forces are indicative" : "",
+                       condition_cells_per_feed(Condition{.kind = "chip"}, o.cells_per_feed),
+                       ChipThresholds{}.resolved_cells_per_feed);
     s << "## Assumptions\n\n"
          "- **Width of cut b = 1 mm (assumed).** The Klippel et al. data give forces in N for the whole width; b is "
          "in the paper's section 2, which was not read. Absolute Fc, Ft in N/mm are compared under this assumption; "
@@ -367,7 +376,7 @@ void add_validate_command(CLI::App& app) {
   v->add_flag("--quick", o->quick, "Coarse and short runs (seconds): checks the pipeline, numbers not converged");
   v->add_option("--cells-per-feed", o->cells_per_feed,
                 "Cells across the uncut chip thickness: cell = t0/N (default 10; lower is coarser and faster, as "
-                "1/N^3)")
+                "1/N^3); chip-type conditions use at least 8")
       ->check(CLI::Range(2, 100));
   v->add_option("-o,--out", o->out_dir, "Output directory (default: results/validation or results/validation_quick)");
   v->add_option("-j,--jobs", o->jobs, "Runs at the same time (default: cores / threads)")->check(CLI::Range(1, 1024));
