@@ -73,9 +73,11 @@ struct Condition {
 
 // Cells across t0 of a condition's run: chip-type conditions need at least the chip analysis' resolved
 // count (below it segments are particle roughness: at t0/5 the 5 and 75 m/s chip types came out swapped).
+int chip_cells_per_feed(int cells_per_feed) {
+  return std::max(cells_per_feed, static_cast<int>(std::ceil(ChipThresholds{}.resolved_cells_per_feed)));
+}
 int condition_cells_per_feed(const Condition& c, int cells_per_feed) {
-  const int resolved = static_cast<int>(std::ceil(ChipThresholds{}.resolved_cells_per_feed));
-  return c.kind == "chip" ? std::max(cells_per_feed, resolved) : cells_per_feed;
+  return c.kind == "chip" ? chip_cells_per_feed(cells_per_feed) : cells_per_feed;
 }
 
 std::string case_text(const Condition& c, bool quick, int cells_per_feed) {
@@ -301,7 +303,7 @@ int run_validation(const ValidateOptions& o) {
                        "conditions at t0/{} (at least the {} cells the chip analysis needs to resolve segments).\n\n",
                        o.cells_per_feed, o.cells_per_feed,
                        o.cells_per_feed < 10 ? " — coarser than the preset's t0/10: forces are indicative" : "",
-                       condition_cells_per_feed(Condition{.kind = "chip"}, o.cells_per_feed),
+                       chip_cells_per_feed(o.cells_per_feed),
                        ChipThresholds{}.resolved_cells_per_feed);
     s << "## Assumptions\n\n"
          "- **Width of cut b = 1 mm (assumed).** The Klippel et al. data give forces in N for the whole width; b is "
