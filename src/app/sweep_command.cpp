@@ -263,6 +263,24 @@ CaseResult read_case_result(const fs::path& dir, const fs::path& log_file, int e
     r.force_basis = "last half of the cut (no steady window)";
   }
   if (summary.contains("max_temperature_K")) r.max_temperature_K = number_of(summary["max_temperature_K"]);
+  if (summary.contains("cell_size_m"))
+    if (auto h = number_of(summary["cell_size_m"])) r.cell_size_um = *h * 1e6;
+  if (summary.contains("mass_scaling") && summary["mass_scaling"].contains("factor"))
+    r.mass_scaling_factor = number_of(summary["mass_scaling"]["factor"]);
+  // The tool's work and where it went (energy_J_per_m; the tool is the first rigid body).
+  if (summary.contains("energy_J_per_m") && summary["energy_J_per_m"].is_object()) {
+    const json& e = summary["energy_J_per_m"];
+    const auto get = [&](const char* k) { return e.contains(k) ? number_of(e[k]) : std::nullopt; };
+    r.tool_work_J_per_m = get("external_work");
+    r.plastic_work_J_per_m = get("plastic_work");
+    r.damage_J_per_m = get("damage_dissipation");
+    r.friction_J_per_m = get("friction_work");
+    const auto kinetic = get("kinetic"), elastic = get("elastic"), viscous = get("viscous_dissipation");
+    if (kinetic && elastic) r.kinetic_elastic_J_per_m = *kinetic + *elastic;
+    if (r.tool_work_J_per_m && r.plastic_work_J_per_m && r.damage_J_per_m && r.friction_J_per_m && r.kinetic_elastic_J_per_m)
+      r.unaccounted_J_per_m = *r.tool_work_J_per_m - *r.plastic_work_J_per_m - *r.damage_J_per_m - *r.friction_J_per_m -
+                              *r.kinetic_elastic_J_per_m - viscous.value_or(0.0);
+  }
   if (summary.contains("wall_time_s")) r.wall_time_s = number_of(summary["wall_time_s"]);
 
   if (summary.contains("temperature") && summary["temperature"].is_object()) {
@@ -279,6 +297,7 @@ CaseResult read_case_result(const fs::path& dir, const fs::path& log_file, int e
                                {{"_um", 1.0}, {"_m", 1e6}, {"_mm", 1e3}});
     r.frequency_kHz = find_quantity(chip, {"segmentation_frequency", "frequency", "segment_frequency"},
                                     {{"_kHz", 1.0}, {"_Hz", 1e-3}, {"_MHz", 1e3}});
+    if (chip.contains("chip_thickness_ratio")) r.chip_thickness_ratio = number_of(chip["chip_thickness_ratio"]);
   }
   return r;
 }
@@ -324,6 +343,7 @@ struct SweepOptions {
   std::string case_file;
   std::vector<double> speeds_m_per_s;
   std::vector<double> feeds_m;
+  std::vector<int> cells_per_feed;  // empty: the case's own cell size
   int jobs = 0;
   int threads = 1;
   std::string out_dir;
@@ -352,29 +372,35 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
 
   struct Case {
     double speed, feed;
+    int cells_per_feed;  // 0: the case's own cell size
     fs::path dir;
   };
   std::vector<Case> cases;
   std::vector<ChildRun> runs;
-  for (double h : feeds_m)
-    for (double v : o.speeds_m_per_s) {
-      const std::string name = fmt::format("v{:g}mps_h{:g}mm", v, h * 1e3);
-      cases.push_back({v, h, out / name});
-      ChildRun run;
-      run.name = name;
-      run.args = {"run", fs::absolute(o.case_file).string(), "--out", (out / name).string(), "--force",
-                  "--no-progress", "--threads", std::to_string(o.threads)};
-      for (const std::string& s : o.overrides) run.args.insert(run.args.end(), {"--set", s});
-      // After the user's --set: the grid values win.
-      run.args.insert(run.args.end(), {"--set", fmt::format("cutting.cutting_speed={}", v), "--set",
-                                       fmt::format("cutting.uncut_chip_thickness={}", h)});
-      run.log_file = out / "logs" / (name + ".log");
-      runs.push_back(run);
-    }
-  std::cout << fmt::format("mpmcut sweep: {} cases ({} speeds x {} feeds) from {}, at most {} at a time, each with "
-                           "--threads {} (change with --jobs/--threads); results in {}\n",
-                           runs.size(), o.speeds_m_per_s.size(), feeds_m.size(), o.case_file, jobs, o.threads,
-                           out.string())
+  const std::vector<int> resolutions = o.cells_per_feed.empty() ? std::vector<int>{0} : o.cells_per_feed;
+  for (int n : resolutions)
+    for (double h : feeds_m)
+      for (double v : o.speeds_m_per_s) {
+        const std::string name = fmt::format("v{:g}mps_h{:g}mm", v, h * 1e3) + (n > 0 ? fmt::format("_n{}", n) : "");
+        cases.push_back({v, h, n, out / name});
+        ChildRun run;
+        run.name = name;
+        // --keep-complete: a rerun of the sweep keeps the cases already complete and resumes interrupted ones.
+        run.args = {"run", fs::absolute(o.case_file).string(), "--out", (out / name).string(), "--keep-complete",
+                    "--no-progress", "--threads", std::to_string(o.threads)};
+        for (const std::string& s : o.overrides) run.args.insert(run.args.end(), {"--set", s});
+        // After the user's --set: the grid values win.
+        run.args.insert(run.args.end(), {"--set", fmt::format("cutting.cutting_speed={}", v), "--set",
+                                         fmt::format("cutting.uncut_chip_thickness={}", h)});
+        if (n > 0) run.args.insert(run.args.end(), {"--set", fmt::format("cutting.cell_size={}", h / n)});
+        run.log_file = out / "logs" / (name + ".log");
+        runs.push_back(run);
+      }
+  std::cout << fmt::format("mpmcut sweep: {} cases ({} speeds x {} feeds x {} resolutions) from {}, at most {} at a "
+                           "time, each with --threads {} (change with --jobs/--threads); results in {} (complete cases "
+                           "of an earlier sweep there are kept)\n",
+                           runs.size(), o.speeds_m_per_s.size(), feeds_m.size(), resolutions.size(), o.case_file, jobs,
+                           o.threads, out.string())
             << std::flush;
   const bool completed = run_children(runs, jobs, true);
 
@@ -398,21 +424,40 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
   }
 
   TextTable table;
-  table.columns = {"case", "speed_m_per_s", "speed_m_per_min", "feed_mm", "status", "mean_cutting_force_N_per_mm",
-                   "mean_thrust_force_N_per_mm", "force_window", "max_temperature_K", "shear_zone_max_temperature_K",
-                   "tool_chip_max_temperature_K", "chip_classification",
-                   "segmentation_degree", "pitch_um", "segmentation_frequency_kHz", "wall_time_s", "message"};
-  table.headings = {"case", "V (m/s)", "V (m/min)", "h (mm)", "status", "Fc (N/mm)", "Ft (N/mm)", "force window",
-                    "T max (K)", "T shear zone (K)", "T tool–chip (K)", "chip", "segmentation degree", "pitch (µm)", "frequency (kHz)", "wall (s)", "message"};
+  table.columns = {"case", "speed_m_per_s", "speed_m_per_min", "feed_mm", "cell_size_um", "cells_per_feed",
+                   "mass_scaling_factor", "status", "mean_cutting_force_N_per_mm",
+                   "mean_thrust_force_N_per_mm", "force_window", "chip_thickness_ratio", "max_temperature_K",
+                   "shear_zone_max_temperature_K", "tool_chip_max_temperature_K", "chip_classification",
+                   "segmentation_degree", "pitch_um", "segmentation_frequency_kHz", "plastic_work_fraction",
+                   "damage_fraction", "friction_fraction", "kinetic_elastic_fraction", "unaccounted_fraction",
+                   "wall_time_s", "message"};
+  table.headings = {"case", "V (m/s)", "V (m/min)", "h (mm)", "cell (µm)", "cells across h", "mass scaling",
+                    "status", "Fc (N/mm)", "Ft (N/mm)", "force window", "t0/tc", "T max (K)", "T shear zone (K)",
+                    "T tool–chip (K)", "chip", "segmentation degree", "pitch (µm)", "frequency (kHz)",
+                    "plastic / W", "damage / W", "friction / W", "kinetic+elastic / W", "unaccounted / W",
+                    "wall (s)", "message"};
   int failed = 0;
+  std::vector<CaseResult> results;
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const CaseResult r = read_case_result(cases[i].dir, runs[i].log_file, runs[i].exit_code);
+    results.push_back(r);
     if (r.status != "complete") ++failed;
+    const auto fraction = [&](const std::optional<double>& part) {
+      return part && r.tool_work_J_per_m && *r.tool_work_J_per_m > 0 ? std::optional<double>(*part / *r.tool_work_J_per_m)
+                                                                       : std::nullopt;
+    };
     table.rows.push_back({runs[i].name, fmt::format("{:g}", cases[i].speed), fmt::format("{:g}", cases[i].speed * 60.0),
-                          fmt::format("{:g}", cases[i].feed * 1e3), r.status, format_number(r.cutting_force_N_per_mm),
-                          format_number(r.thrust_force_N_per_mm), r.force_basis, format_number(r.max_temperature_K),
+                          fmt::format("{:g}", cases[i].feed * 1e3), format_number(r.cell_size_um, 3),
+                          format_number(r.cell_size_um ? std::optional<double>(cases[i].feed * 1e6 / *r.cell_size_um)
+                                                       : std::nullopt, 3),
+                          format_number(r.mass_scaling_factor, 3), r.status, format_number(r.cutting_force_N_per_mm),
+                          format_number(r.thrust_force_N_per_mm), r.force_basis, format_number(r.chip_thickness_ratio, 3),
+                          format_number(r.max_temperature_K),
                           format_number(r.shear_zone_max_K), format_number(r.tool_chip_max_K), r.chip_classification, format_number(r.segmentation_degree, 3), format_number(r.pitch_um, 3),
-                          format_number(r.frequency_kHz, 3),
+                          format_number(r.frequency_kHz, 3), format_number(fraction(r.plastic_work_J_per_m), 3),
+                          format_number(fraction(r.damage_J_per_m), 3), format_number(fraction(r.friction_J_per_m), 3),
+                          format_number(fraction(r.kinetic_elastic_J_per_m), 3),
+                          format_number(fraction(r.unaccounted_J_per_m), 3),
                           format_number(r.wall_time_s ? r.wall_time_s : std::optional<double>(runs[i].wall_time_s), 3),
                           r.message});
   }
@@ -425,8 +470,41 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
                      "analysis in summary.json and are blank where it did not provide them.\n\n",
                      cases.size(), cases.size() - failed, failed);
     s << table.markdown() << "\n";
-    s << "Plots: forces_vs_speed.png, chip_vs_speed.png, chip_map.png. Each case: its result directory "
-         "(mpmcut plot DIR draws it) and logs/<case>.log.\n";
+    if (resolutions.size() > 1) {
+      // Grid convergence: per condition, the change between the two finest complete resolutions.
+      TextTable conv;
+      conv.columns = {"speed_m_per_s", "feed_mm", "finest_pair", "cutting_force_change", "thrust_force_change",
+                      "chip_thickness_change", "pitch_change", "chip_type_same"};
+      conv.headings = {"V (m/s)", "h (mm)", "cells across h", "ΔFc", "ΔFt", "Δ(t0/tc)", "Δpitch", "same chip type"};
+      for (double h : feeds_m)
+        for (double v : o.speeds_m_per_s) {
+          std::vector<std::size_t> idx;
+          for (std::size_t i = 0; i < cases.size(); ++i)
+            if (cases[i].speed == v && cases[i].feed == h && results[i].status == "complete") idx.push_back(i);
+          std::sort(idx.begin(), idx.end(), [&](auto a, auto b) { return cases[a].cells_per_feed < cases[b].cells_per_feed; });
+          if (idx.size() < 2) continue;
+          const CaseResult &a = results[idx[idx.size() - 2]], &b = results[idx.back()];
+          const auto change = [](const std::optional<double>& x, const std::optional<double>& y) -> std::string {
+            if (!x || !y || *x == 0.0) return "";
+            return fmt::format("{:+.1f} %", 100.0 * (*y - *x) / std::abs(*x));
+          };
+          conv.rows.push_back({fmt::format("{:g}", v), fmt::format("{:g}", h * 1e3),
+                               fmt::format("{} → {}", cases[idx[idx.size() - 2]].cells_per_feed, cases[idx.back()].cells_per_feed),
+                               change(a.cutting_force_N_per_mm, b.cutting_force_N_per_mm),
+                               change(a.thrust_force_N_per_mm, b.thrust_force_N_per_mm),
+                               change(a.chip_thickness_ratio, b.chip_thickness_ratio), change(a.pitch_um, b.pitch_um),
+                               a.chip_classification == b.chip_classification ? "yes" : a.chip_classification + " → " + b.chip_classification});
+        }
+      conv.write_csv(out / "convergence.csv");
+      s << "## Grid convergence\n\nChange from the second finest to the finest complete resolution of each condition "
+           "(relative to the second finest). The study's goals: |ΔFc|, |ΔFt| and |Δ(t0/tc)| < 5 %, |Δpitch| < 10 %, "
+           "the same chip type.\n\n"
+        << conv.markdown() << "\n";
+      s << "Plots: convergence.png (each quantity against the cells across h). ";
+    } else {
+      s << "Plots: forces_vs_speed.png, chip_vs_speed.png, chip_map.png. ";
+    }
+    s << "Each case: its result directory (mpmcut plot DIR draws it) and logs/<case>.log.\n";
   });
   std::cout << "wrote " << (out / "sweep.csv").string() << " and " << (out / "sweep.md").string() << "\n";
 
@@ -434,8 +512,10 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
     std::string why;
     if (!python_plotting_available(false, why)) {
       std::cerr << "warning: no sweep plots: " << why << "\n";
-    } else if (int code = run_python_tool("plot_sweep.py", {out.string()}); code != 0) {
-      std::cerr << "warning: plot_sweep.py failed (exit status " << code << ")\n";
+    } else {
+      const char* tool = resolutions.size() > 1 ? "plot_convergence.py" : "plot_sweep.py";
+      if (int code = run_python_tool(tool, {out.string()}); code != 0)
+        std::cerr << "warning: " << tool << " failed (exit status " << code << ")\n";
     }
   }
   if (!completed) return 130;
@@ -460,6 +540,10 @@ void add_sweep_command(CLI::App& app) {
   sweep->add_option("--feeds", o->feeds_m,
                     "Uncut chip thicknesses (feeds) in m, comma separated, e.g. 0.05e-3,0.1e-3 (default: the case's own)")
       ->delimiter(',')->check(CLI::PositiveNumber);
+  sweep->add_option("--cells-per-feed", o->cells_per_feed,
+                    "Resolutions, cells across the uncut chip thickness, comma separated (cell = h/N), e.g. 8,12,16,24 "
+                    "for a convergence study (default: the case's cell size)")
+      ->delimiter(',')->check(CLI::Range(2, 200));
   sweep->add_option("-j,--jobs", o->jobs, "Cases run at the same time (default: cores / threads)")->check(CLI::Range(1, 1024));
   sweep->add_option("-t,--threads", o->threads, "OpenMP threads of each case (default: 1)")->check(CLI::Range(1, 1024));
   sweep->add_option("-o,--out", o->out_dir, "Sweep directory (default: results/sweep_<case name>)");

@@ -39,6 +39,11 @@ struct CaseResult {
   std::string chip_classification;  // from summary.json "chip" (mpmcut analyze); blank if absent
   std::optional<double> segmentation_degree, pitch_um, frequency_kHz;
   std::optional<double> wall_time_s;
+  std::optional<double> cell_size_um, mass_scaling_factor, chip_thickness_ratio;
+  // Energy ledger at the end (summary.json energy_J_per_m): the tool's work and where it went; the
+  // unaccounted part is the numerical remainder (FLIP/PIC, removed particles, safeguards).
+  std::optional<double> tool_work_J_per_m, plastic_work_J_per_m, damage_J_per_m, friction_J_per_m,
+      kinetic_elastic_J_per_m, unaccounted_J_per_m;
 };
 
 // Reads summary.json of `dir` (and forces.csv for the fallback mean: when the run ended before its steady

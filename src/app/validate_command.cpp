@@ -101,6 +101,7 @@ std::string case_text(const Condition& c, bool quick, int cells_per_feed) {
                    c.kind == "forces" ? "measured mean r_n of the tests" : "preset default: not stated in the source");
   s += "friction = 0.35            # ASSUMPTION: preset default Coulomb coefficient\n";
   s += fmt::format("cell_size = {}\n", cell);
+  s += "mass_scaling = \"auto\"     # workpiece inertia up to an inertia number of 0.002 (docs/mass_scaling.md)\n";
   s += fmt::format("particles_per_cell = {}\n", quick ? 1 : 2);
   s += fmt::format("snapshots = {}\n", quick ? 2 : 20);
   return s;
@@ -191,7 +192,7 @@ int run_validation(const ValidateOptions& o) {
     write_file_atomically(case_file, [&](std::ostream& s) { s << case_text(c, o.quick, o.cells_per_feed); });
     ChildRun r;
     r.name = c.id;
-    r.args = {"run", case_file.string(), "--out", (out / c.id).string(), "--force", "--no-progress", "--threads",
+    r.args = {"run", case_file.string(), "--out", (out / c.id).string(), "--keep-complete", "--no-progress", "--threads",
               std::to_string(o.threads)};
     r.log_file = out / "logs" / (c.id + ".log");
     runs.push_back(r);

@@ -137,7 +137,8 @@ ConstitutiveIncrement JohnsonCookMaterial::update(Particles& p, std::size_t i, c
   double viscous_pressure = 0.0;
   if (eos_.has_bulk_viscosity() && ev < 0.0) {
     const double c = std::sqrt((eos_.bulk_modulus(density) + 4.0 / 3.0 * G_) / density);
-    viscous_pressure = eos_.bulk_viscosity(density, ev / dt, ctx.cell_size, c);
+    const double f = ctx.inertia_factor;  // mass scaling: damp the dynamics that are integrated
+    viscous_pressure = eos_.bulk_viscosity(f * density, ev / dt, ctx.cell_size, c / std::sqrt(f));
     inc.viscous_dissipation = viscous_pressure * (-ev) * volume;
   }
 
