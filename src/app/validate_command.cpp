@@ -11,6 +11,7 @@
 
 #include "analysis/chip_analysis.hpp"
 #include "app/plot_command.hpp"
+#include "studies/task_farm.hpp"
 #include "app/sweep_command.hpp"
 #include "io/atomic_file.hpp"
 
@@ -197,13 +198,13 @@ int run_validation(const ValidateOptions& o) {
     runs.push_back(r);
   }
   const int jobs = o.jobs > 0 ? o.jobs : std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / o.threads);
-  std::cout << fmt::format("mpmcut validate{}: {} runs, at most {} at a time, each with --threads {}; results in {}\n",
+  std::cout << fmt::format("mpmcut validate{}: {} runs, {}, each with --threads {}; results in {}\n",
                            o.quick ? " --quick (coarse: 4 cells/t0, 1 particle per cell, 4 cells of travel; checks "
                                      "the pipeline, the numbers are not converged)"
                                    : "",
-                           runs.size(), jobs, o.threads, out.string())
+                           runs.size(), concurrency_text(jobs), o.threads, out.string())
             << std::flush;
-  const bool completed = run_children(runs, jobs, true);
+  const bool completed = run_cases(runs, jobs, true);
   int failed = 0;
   for (std::size_t i = 0; i < conditions.size(); ++i) {
     conditions[i].result = read_case_result(out / conditions[i].id, runs[i].log_file, runs[i].exit_code);
@@ -387,7 +388,7 @@ void add_validate_command(CLI::App& app) {
   v->callback([o]() {
     int code = 0;
     try {
-      code = run_validation(*o);
+      code = run_study([&] { return run_validation(*o); });
     } catch (const std::exception& e) {
       std::cerr << "error: " << e.what() << "\n";
       code = 4;
