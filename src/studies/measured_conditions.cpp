@@ -139,7 +139,7 @@ std::string condition_case_text(const CuttingCondition& c, const ConditionRunSet
   s += fmt::format("friction = {}  # {}\n", o.friction, o.friction_note);
   s += fmt::format("cell_size = {}\n", cell);
   s += fmt::format("particles_per_cell = {}\n", o.quick ? 1 : 2);
-  s += fmt::format("snapshots = {}\n", o.quick ? 2 : 20);
+  s += fmt::format("snapshots = {}\n", o.snapshots > 0 ? o.snapshots : o.quick ? 2 : 20);
   return s;
 }
 

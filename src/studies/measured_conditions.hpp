@@ -70,6 +70,7 @@ struct ConditionRunSettings {
   std::vector<std::pair<std::string, double>> material_overrides;
   double friction = 0.35;   // Coulomb coefficient at the tool
   std::string friction_note = "ASSUMPTION: preset default Coulomb coefficient";
+  int snapshots = 0;        // VTU snapshots of each run; 0: 2 with quick, else 20
 };
 
 // Cells across t0 of chip-type conditions: at least the chip analysis' resolved count (below it
