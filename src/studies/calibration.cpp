@@ -291,12 +291,22 @@ void Calibrator::optimize_stage(const std::string& algorithm, int budget, std::v
 }
 
 void Calibrator::load_cache() {
-  std::ifstream in(out_ / "cache.jsonl");
+  const fs::path file = out_ / "cache.jsonl";
+  std::ifstream in(file);
+  std::string complete;  // the lines that parse, each with its newline
+  bool damaged = false;
   for (std::string line; std::getline(in, line);) {
     const json j = json::parse(line, nullptr, false);
-    if (j.is_discarded() || !j.contains("key")) continue;  // a line cut short by a kill
+    if (j.is_discarded() || !j.contains("key") || in.eof()) {  // a line cut short by a kill
+      damaged = true;
+      continue;
+    }
     cache_[j.at("key").get<std::string>()] = evaluation_from_json(j.at("evaluation"));
+    complete += line + "\n";
   }
+  in.close();
+  // Without its cut-short tail, so that the next line appended starts on a line of its own.
+  if (damaged) write_file_atomically(file, [&](std::ostream& s) { s << complete; });
 }
 
 void Calibrator::append_to_cache(const std::string& key, const Evaluation& e) {
@@ -475,13 +485,22 @@ int Calibrator::run() {
   std::cout << fmt::format("mpmcut calibrate: {} evaluations ({} run now, {} from the cache); best objective {:.4g}\n",
                            sequence_.size(), ran_, replayed_, best.objective);
 
+  // The held-back conditions at the best set, cached like an evaluation (under their own key).
   std::vector<ConditionResult> held_back;
-  bool completed = true;
-  if (!c_.held_back.empty()) {
+  const std::string held_key = "held_back:" + best_key;
+  if (const auto it = cache_.find(held_key); it != cache_.end()) {
+    held_back = it->second.conditions;
+  } else if (!c_.held_back.empty()) {
     std::cout << "mpmcut calibrate: the held-back conditions at the best set\n" << std::flush;
+    bool completed = true;
     held_back = run_conditions(c_.held_back, best.values, out_ / "best_held_back", completed);
+    if (!completed) return 130;
+    Evaluation e = best;
+    e.conditions = held_back;
+    e.objective = objective(c_.held_back, held_back);
+    cache_[held_key] = e;
+    append_to_cache(held_key, e);
   }
-  if (!completed) return 130;
   bool held_back_complete = true;
   for (const ConditionResult& r : held_back) held_back_complete = held_back_complete && r.status == "complete";
   write_results(best, held_back, held_back_complete);
