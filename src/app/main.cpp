@@ -10,6 +10,7 @@
 #include "app/bench_command.hpp"
 #include "app/plot_command.hpp"
 #include "app/sweep_command.hpp"
+#include "app/calibrate_command.hpp"
 #include "app/validate_command.hpp"
 #include "app/run_case.hpp"
 #include "io/input_error.hpp"
@@ -83,6 +84,7 @@ int main(int argc, char** argv) {
   add_plot_command(app);
   add_sweep_command(app);
   add_validate_command(app);
+  add_calibrate_command(app);
   add_analyze_command(app);
 
   CLI11_PARSE(app, argc, argv);

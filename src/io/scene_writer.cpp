@@ -50,6 +50,21 @@ const char* name(BoundaryKind b) {
   return "?";
 }
 
+
+std::string shape_line(const Shape& s) {
+  switch (s.kind) {
+    case ShapeKind::Rectangle:
+      return "rectangle = { min = " + vec(s.rectangle.min) + ", max = " + vec(s.rectangle.max) + " }";
+    case ShapeKind::Disk:
+      return "disk = { center = " + vec(s.disk.center) + ", radius = " + num(s.disk.radius) + " }";
+    case ShapeKind::Polygon:
+      return "polygon = " + points(s.polygon.vertices);
+  }
+  return "";
+}
+
+}  // namespace
+
 void write_material(const MaterialParameters& m, std::ostream& out) {
   auto line = [&](const char* key, double value) { out << key << " = " << num(value) << "\n"; };
   out << "\n[[material]]\n";
@@ -92,20 +107,6 @@ void write_material(const MaterialParameters& m, std::ostream& out) {
   line("fracture_transition_exponent", m.fracture_transition_exponent);
   line("max_damage", m.max_damage);
 }
-
-std::string shape_line(const Shape& s) {
-  switch (s.kind) {
-    case ShapeKind::Rectangle:
-      return "rectangle = { min = " + vec(s.rectangle.min) + ", max = " + vec(s.rectangle.max) + " }";
-    case ShapeKind::Disk:
-      return "disk = { center = " + vec(s.disk.center) + ", radius = " + num(s.disk.radius) + " }";
-    case ShapeKind::Polygon:
-      return "polygon = " + points(s.polygon.vertices);
-  }
-  return "";
-}
-
-}  // namespace
 
 void write_scene(const Scene& s, std::ostream& out) {
   out << "# Complete mpmcut case: every key explicit (docs/input.md).\n";
