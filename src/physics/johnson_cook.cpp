@@ -213,6 +213,9 @@ ConstitutiveIncrement JohnsonCookMaterial::update(Particles& p, std::size_t i, c
     inc.damage_dissipation += Y * ((failed ? 1.0 : D) - D0) * volume;
   }
   if (failed) s = {};
+  // Per particle, so that the crack length it stands for, damage_dissipation / G_f, can be summed
+  // with each particle's own G_f (rate-dependent, theory_materials.md §5.6).
+  if (inc.damage_dissipation != 0.0) p.damage_dissipation[i] += inc.damage_dissipation;
 
   // 8. Store the state: undamaged stress (no viscosity) for the next step, degraded stress for forces.
   p.effective_stress[i] = s.plus_identity(-pressure);
