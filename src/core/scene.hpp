@@ -52,6 +52,9 @@ struct MaterialParameters {
   bool damage_enabled = false;
   double jc_D1 = 0.0, jc_D2 = 0.0, jc_D3 = 0.0, jc_D4 = 0.0, jc_D5 = 0.0;
   double min_failure_strain = 0.01;  // clamp for eps_f, -
+  // No ductile fracture at or below this stress triaxiality eta = -p/q: neither initiation nor softening
+  // advance there (Bao & Wierzbicki 2005: -1/3). theory_materials.md §5.7.
+  double damage_triaxiality_cutoff = -1.0 / 3.0;
   // Hillerborg evolution after initiation
   DamageEvolution damage_evolution = DamageEvolution::Linear;
   double fracture_energy = 0.0;   // G_f, J/m^2 (or from K_IC); the low-rate value when rate-dependent

@@ -129,6 +129,7 @@ MaterialParameters read_material(TableReader& t, const MaterialLibrary& library)
   m.jc_D4 = t.number("jc_D4", m.jc_D4);
   m.jc_D5 = t.number("jc_D5", m.jc_D5);
   m.min_failure_strain = t.number("min_failure_strain", m.min_failure_strain);
+  m.damage_triaxiality_cutoff = t.number("damage_triaxiality_cutoff", m.damage_triaxiality_cutoff);
   m.damage_evolution = t.choice<DamageEvolution>(
       "damage_evolution", {{"linear", DamageEvolution::Linear}, {"exponential", DamageEvolution::Exponential}},
       m.damage_evolution);

@@ -99,6 +99,7 @@ void write_material(const MaterialParameters& m, std::ostream& out) {
   line("jc_D4", m.jc_D4);
   line("jc_D5", m.jc_D5);
   line("min_failure_strain", m.min_failure_strain);
+  line("damage_triaxiality_cutoff", m.damage_triaxiality_cutoff);
   out << "damage_evolution = \"" << (m.damage_evolution == DamageEvolution::Exponential ? "exponential" : "linear")
       << "\"\n";
   line("fracture_energy", m.fracture_energy);
