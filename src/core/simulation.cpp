@@ -3,6 +3,8 @@
 // heat conduction. step() reads like the algorithm; each stage is one function below.
 #include "core/simulation.hpp"
 
+#include "contact/contact_law.hpp"
+
 #include <omp.h>
 
 #include <algorithm>
@@ -128,6 +130,7 @@ void Simulation::step(double max_dt) {
   particles_to_grid();
   apply_grid_boundary_conditions(true);
   for (auto& r : rigid_) r.step_impulse = Vec2::Zero();
+  contact_records_.clear();
   friction_box_lo_ = Vec2::Constant(std::numeric_limits<double>::max());
   friction_box_hi_ = Vec2::Constant(-std::numeric_limits<double>::max());
   apply_rigid_contact(grid_.velocity, dt, ContactPass::AfterP2G);
@@ -193,6 +196,7 @@ void Simulation::push_particles_out_of_rigid_bodies(double dt) {
         const Vec2 dp = -P.mass[p] * vn * normal;
         P.velocity[p] -= vn * normal;
         impulse += dp;
+        contact_records_.push_back({static_cast<int>(r), 2, position_new_[p], normal, dp, false});
         work += dp.dot(vr);
       }
       ++pushed_out_particles_;
@@ -444,18 +448,16 @@ void Simulation::apply_rigid_contact(std::vector<Vec2>& v, double dt, ContactPas
           continue;  // separating
         }
         if (pass == ContactPass::AfterUpdate) G.in_contact[n] = 1;
-        Vec2 vt = rel - vn * normal;
-        const double vt_norm = vt.norm();
-        Vec2 new_rel = vt;  // normal approach removed
-        if (vt_norm > 0.0) {
-          const double reduction = std::min(vt_norm, mu * std::abs(vn));  // Coulomb: |dv_t| <= mu |dv_n|
-          new_rel = vt * (1.0 - reduction / vt_norm);
-        }
+        const ContactCorrection cc = coulomb_rigid_correction(rel, normal, mu);
+        const Vec2 vt = rel - vn * normal;
+        const Vec2& new_rel = cc.new_relative;
         const Vec2 dv = new_rel - rel;
         v[n] = vr + new_rel;
         if (accumulate_force) {
           const Vec2 dp = m * dv;  // momentum given to the material by the rigid body
           impulse += dp;
+          contact_records_.push_back({static_cast<int>(r), pass == ContactPass::AfterP2G ? 0 : 1, xbar, normal, dp,
+                                      cc.sliding});
           work += dp.dot(vr);
           // Frictional work = friction impulse x the slip that goes on (Coulomb force times slip
           // distance); sticking does no frictional work. It becomes heat in the deformable body at
