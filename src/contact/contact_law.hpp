@@ -13,22 +13,28 @@ namespace mpmcut {
 struct ContactCorrection {
   Vec2 new_relative = Vec2::Zero();  // relative velocity after contact, m/s
   bool sliding = false;              // Coulomb limit reached: the slip goes on
+  double friction_dv = 0.0;          // size of the tangential velocity change at the node, m/s
+  double slip_after = 0.0;           // slip speed of the material in contact after the change, m/s
 };
 
 // Removes the normal component vn of the relative velocity `rel` (callers apply it where vn < 0,
 // the approach, or where an earlier pass found contact) and reduces the tangential
 // slip by at most mu |vn| (Coulomb: the friction impulse is at most mu times the normal impulse
 // at the node; below that the node sticks). `normal` is the rigid body's unit outward normal.
-// With weight w in [0, 1] only the fraction w of the normal approach is removed (and friction acts
-// on that fraction): a node half-way across the contact band takes half the correction.
+// With weight w in (0, 1], the share of the node's mass that is in contact, the law acts on that
+// share: the fraction w of the normal approach is removed, and friction can at most stop the
+// fraction w of the slip (sticking brings the contacting mass, not the whole node, to the rigid
+// body's tangential velocity). With w = 1 this is the plain nodal law.
 inline ContactCorrection coulomb_rigid_correction(const Vec2& rel, const Vec2& normal, double mu, double w = 1.0) {
   const double vn = rel.dot(normal);
   const Vec2 vt = rel - vn * normal;
   const double vt_norm = vt.norm();
   const double dvn = w * std::abs(vn);                   // size of the normal velocity change
-  const double reduction = std::min(vt_norm, mu * dvn);  // |dv_t| <= mu |dv_n|
+  const double reduction = std::min(w * vt_norm, mu * dvn);  // |dv_t| <= mu |dv_n|
   ContactCorrection c;
-  c.sliding = vt_norm > mu * dvn;
+  c.sliding = w * vt_norm > mu * dvn;
+  c.friction_dv = reduction;
+  c.slip_after = w > 0.0 ? std::max(0.0, vt_norm - reduction / w) : vt_norm;
   c.new_relative = rel - (w * vn) * normal - (vt_norm > 0.0 ? Vec2((reduction / vt_norm) * vt) : Vec2::Zero());
   return c;
 }

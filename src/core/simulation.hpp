@@ -96,6 +96,7 @@ class Simulation {
   void update_grid_momentum(double dt);
   enum class ContactPass { AfterP2G, AfterUpdate, MuslRemap };
   void apply_rigid_contact(std::vector<Vec2>& velocity, double dt, ContactPass pass);
+  void compute_particle_contact_weights();
   void grid_to_particles(double dt);
   void remap_momentum_musl();
   void update_particle_stress(double dt);
@@ -132,6 +133,9 @@ class Simulation {
   std::size_t parallel_min_particles_ = 4096;
   bool parallel_ = true;
   Vec2 friction_box_lo_, friction_box_hi_;  // node index box with frictional heat this step
+  bool particle_contact_ = false;  // scene_.solver.contact_detection == Particle
+  std::vector<std::vector<double>> contact_weight_;  // per rigid body, per node: sum S m phi, kg/m
+  std::vector<std::vector<Vec2>> contact_normal_;    // per rigid body, per node: sum S m phi n
   std::vector<ContactRecord> contact_records_;  // last step's contact, see contact_records()
   long pushed_out_particles_ = 0;             // particle corrections by the rigid-body safeguard
   long removed_particles_ = 0;                // left the domain (remove_escaping_particles)

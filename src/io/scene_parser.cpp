@@ -237,6 +237,9 @@ SolverSpec read_solver(TableReader t, SolverSpec s = {}) {
   s.remove_escaping_particles = t.boolean("remove_escaping_particles", s.remove_escaping_particles);
   s.contact_distance_cells = t.number("contact_distance_cells", s.contact_distance_cells);
   t.check("contact_distance_cells", s.contact_distance_cells >= 0.0, ">= 0 (cells)", s.contact_distance_cells);
+  s.contact_detection = t.choice<ContactDetection>(
+      "contact_detection", {{"node", ContactDetection::Node}, {"particle", ContactDetection::Particle}},
+      s.contact_detection);
   t.reject_unknown_keys();
   return s;
 }

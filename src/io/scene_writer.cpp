@@ -133,6 +133,8 @@ void write_scene(const Scene& s, std::ostream& out) {
   out << "fixed_time_step = " << num(s.solver.fixed_time_step) << "\n";
   out << "remove_escaping_particles = " << (s.solver.remove_escaping_particles ? "true" : "false") << "\n";
   out << "contact_distance_cells = " << num(s.solver.contact_distance_cells) << "\n";
+  out << "contact_detection = \"" << (s.solver.contact_detection == ContactDetection::Node ? "node" : "particle")
+      << "\"\n";
 
   out << "\n[output]\n";
   out << "snapshot_interval = " << num(s.output.snapshot_interval) << "\n";

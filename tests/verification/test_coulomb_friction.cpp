@@ -39,8 +39,10 @@ struct FrictionRun {
 // An elastic block (0.2 m x 0.1 m, E = 1 MPa) resting on a rigid plate whose top is y = 0.1 m,
 // under the body force g (pressing it on the plate, possibly tilted), while the plate moves at
 // plate_velocity along x. Window: t in [t0, t1] s.
-FrictionRun drag_block(double h, double mu, Vec2 g, Vec2 plate_velocity, double t0, double t1) {
+FrictionRun drag_block(double h, double mu, Vec2 g, Vec2 plate_velocity, double t0, double t1,
+                       ContactDetection detection = ContactDetection::Node) {
   Scene s;
+  s.solver.contact_detection = detection;
   s.grid = {h, Vec2(0.3, 0), Vec2(1.3, 0.35)};
   s.solver.cfl = 0.4;
   s.body_force = g;
@@ -145,5 +147,21 @@ TEST(CoulombFriction, BlockSticksBelowThresholdAndSlidesAbove) {
       std::printf("slide, h = %.3f m: friction / normal = %.5f (mu %.3f), a = %.4f m/s^2 (expected %.4f)\n", h,
                   r.ratio, mu, r.acceleration, a);
     }
+  }
+}
+
+// The same law with contact found from the particles (solver.contact_detection = "particle"), where a
+// node takes the share of its mass in contact: the friction impulse is still mu times the normal one
+// wherever the node slides.
+TEST(CoulombFriction, ParticleDetectionKeepsFrictionRatioMu) {
+  const double g = 10.0, h = 0.02;
+  for (double mu : {0.1, 0.5}) {
+    SCOPED_TRACE(::testing::Message() << "mu = " << mu);
+    const FrictionRun r = drag_block(h, mu, Vec2(0, -g), Vec2(2.0, 0.0), 0.05, 0.2, ContactDetection::Particle);
+    EXPECT_NEAR(r.ratio, mu, 0.005 * mu);
+    EXPECT_LT(r.worst_node_error, 1e-6);
+    EXPECT_NEAR(r.acceleration, mu * g, 0.02 * mu * g);
+    std::printf("particle detection, mu = %.2f: friction / normal = %.6f, a = %.4f m/s^2\n", mu, r.ratio,
+                r.acceleration);
   }
 }
