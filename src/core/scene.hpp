@@ -13,6 +13,8 @@ namespace mpmcut {
 
 enum class ShapeFunctionKind { Linear, UGimp };
 enum class TimeScheme { USL, MUSL };
+// How rigid contact finds its nodes: from the nodes' material positions, or from the particles.
+enum class ContactDetection { Node, Particle };
 enum class BoundaryKind { Free, Fixed, Roller };  // Roller = slip: normal velocity zero
 enum class MaterialModel { Elastic, JohnsonCook };
 enum class EquationOfState { Linear, MieGruneisen };
@@ -167,6 +169,8 @@ struct SolverSpec {
   bool remove_escaping_particles = false;
   // Rigid contact acts at a node when the material's mass-weighted mean position there lies
   // closer to the rigid surface than this many cells (position check, no one-cell gap).
+  // With contact_detection = Particle: particles within lp + this many cells of the surface are in
+  // contact (fully up to lp), and a node takes the share of its mass they carry (docs/cutting.md).
   double contact_distance_cells = 0.5;  // -
   // Mass scaling (docs/mass_scaling.md): the deformable bodies' inertia is multiplied by a factor
   // f >= 1, which lengthens the CFL step by sqrt(f). Heat capacity, conduction, the equation of
@@ -174,6 +178,7 @@ struct SolverSpec {
   // is then chosen at the start so that the stable step reaches it); 1 and 0 = off.
   double mass_scaling_factor = 1.0;            // f, -
   double mass_scaling_target_time_step = 0.0;  // s; 0 = no target
+  ContactDetection contact_detection = ContactDetection::Node;
 
   bool operator==(const SolverSpec&) const = default;  // field-wise, for round-trip tests
 };

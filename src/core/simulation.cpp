@@ -3,6 +3,8 @@
 // heat conduction. step() reads like the algorithm; each stage is one function below.
 #include "core/simulation.hpp"
 
+#include "contact/contact_law.hpp"
+
 #include <omp.h>
 
 #include <algorithm>
@@ -32,6 +34,7 @@ Simulation::Simulation(const Scene& scene) : scene_(scene) {
     rigid_.push_back(st);
   }
   for (const auto& r : scene_.rigid_bodies) has_friction_ = has_friction_ || r.friction > 0.0;
+  particle_contact_ = scene_.solver.contact_detection == ContactDetection::Particle;
   conduction_limit_ = std::numeric_limits<double>::infinity();
   for (const auto& m : scene_.materials) {
     if (m.thermal_conductivity <= 0.0 || m.specific_heat <= 0.0) continue;
@@ -140,8 +143,10 @@ void Simulation::step(double max_dt) {
   particles_to_grid();
   apply_grid_boundary_conditions(true);
   for (auto& r : rigid_) r.step_impulse = Vec2::Zero();
+  contact_records_.clear();
   friction_box_lo_ = Vec2::Constant(std::numeric_limits<double>::max());
   friction_box_hi_ = Vec2::Constant(-std::numeric_limits<double>::max());
+  if (!rigid_.empty() && particle_contact_) compute_particle_contact_weights();
   apply_rigid_contact(grid_.velocity, dt, ContactPass::AfterP2G);
   update_grid_momentum(dt);
   apply_rigid_contact(grid_.velocity_new, dt, ContactPass::AfterUpdate);
@@ -205,6 +210,7 @@ void Simulation::push_particles_out_of_rigid_bodies(double dt) {
         const Vec2 dp = -inertia_factor_ * P.mass[p] * vn * normal;
         P.velocity[p] -= vn * normal;
         impulse += dp;
+        contact_records_.push_back({static_cast<int>(r), 2, position_new_[p], normal, dp, false});
         work += dp.dot(vr);
       }
       ++pushed_out_particles_;
@@ -413,6 +419,51 @@ void Simulation::update_grid_momentum(double dt) {
   apply_grid_boundary_conditions(false);
 }
 
+// Contact detected from the particles rather than the nodes: a particle is in contact with a rigid
+// body when its uGIMP domain reaches the surface (signed distance of its centre d <= lp), fading
+// linearly to out of contact at d = lp + contact_distance_cells h. A node's contact weight is the
+// share of its mass carried by particles in contact, sum S m phi / sum S m, and its normal is the
+// mass-weighted mean of their exact surface normals. Both move smoothly with the rigid body
+// across the grid, instead of switching when the tool crosses a node line.
+void Simulation::compute_particle_contact_weights() {
+  const Particles& P = particles_;
+  const Grid& G = grid_;
+  const std::size_t nn = G.node_count();
+  contact_weight_.resize(rigid_.size());
+  contact_normal_.resize(rigid_.size());
+  const double band = scene_.solver.contact_distance_cells * G.h;
+  for (std::size_t r = 0; r < rigid_.size(); ++r) {
+    std::vector<double>& W = contact_weight_[r];
+    std::vector<Vec2>& N = contact_normal_[r];
+    W.assign(nn, 0.0);
+    N.assign(nn, Vec2::Zero());
+    const RigidPolygon& geom = rigid_geometry_[r];
+    const Vec2 shift = rigid_[r].displacement;
+    const Vec2 lo = geom.lower() + shift - Vec2::Constant(2.0 * G.h), hi = geom.upper() + shift + Vec2::Constant(2.0 * G.h);
+    for (std::size_t p = 0; p < P.size(); ++p) {
+      const Vec2 x = P.position[p];
+      if (x.x() < lo.x() || x.x() > hi.x() || x.y() < lo.y() || x.y() > hi.y()) continue;
+      Vec2 normal;
+      const double lp = shape_of(p).half_width();
+      const double d = geom.signed_distance(x - shift, normal);
+      const double phi = band > 0.0 ? std::clamp(1.0 - (d - lp) / band, 0.0, 1.0) : (d <= lp ? 1.0 : 0.0);
+      if (phi <= 0.0) continue;
+      Stencil st;
+      const Vec2 u = cell_units(x);
+      shape_of(p).evaluate(u.x(), u.y(), st);
+      for (int a = 0; a < 3; ++a)
+        for (int c = 0; c < 3; ++c) {
+          const double w = st.w[a][c];
+          if (w == 0.0) continue;
+          const int n = G.index(st.i0 + a, st.j0 + c);
+          const double m = inertia_factor_ * P.mass[p];  // as the grid mass it is compared with
+          W[n] += w * m * phi;
+          N[n] += (w * m * phi) * normal;
+        }
+    }
+  }
+}
+
 // Multi-velocity-field contact with rigid bodies (Bardenhagen et al. 2000; Nairn's rigid
 // form): a rigid body has infinite mass, so at a contact node only the material's velocity
 // changes. Contact holds where the material approaches the rigid surface and its mean
@@ -450,8 +501,17 @@ void Simulation::apply_rigid_contact(std::vector<Vec2>& v, double dt, ContactPas
         if (m <= node_mass_cutoff_ || (G.fixed[n] & 3)) continue;  // never change BC nodes
         const Vec2 xbar = G.mass_position[n] / m;
         Vec2 normal;
-        const double dist = geom.signed_distance(xbar - shift, normal);
-        if (dist > cutoff) continue;
+        double weight = 1.0;
+        if (particle_contact_) {
+          weight = std::min(1.0, contact_weight_[r][n] / m);
+          if (weight <= 0.0) continue;
+          const double nn = contact_normal_[r][n].norm();
+          if (nn <= 0.0) continue;
+          normal = contact_normal_[r][n] / nn;
+        } else {
+          const double dist = geom.signed_distance(xbar - shift, normal);
+          if (dist > cutoff) continue;
+        }
         const Vec2 rel = v[n] - vr;
         const double vn = rel.dot(normal);
         if (pass == ContactPass::MuslRemap) {
@@ -463,18 +523,15 @@ void Simulation::apply_rigid_contact(std::vector<Vec2>& v, double dt, ContactPas
           continue;  // separating
         }
         if (pass == ContactPass::AfterUpdate) G.in_contact[n] = 1;
-        Vec2 vt = rel - vn * normal;
-        const double vt_norm = vt.norm();
-        Vec2 new_rel = vt;  // normal approach removed
-        if (vt_norm > 0.0) {
-          const double reduction = std::min(vt_norm, mu * std::abs(vn));  // Coulomb: |dv_t| <= mu |dv_n|
-          new_rel = vt * (1.0 - reduction / vt_norm);
-        }
+        const ContactCorrection cc = coulomb_rigid_correction(rel, normal, mu, weight);
+        const Vec2& new_rel = cc.new_relative;
         const Vec2 dv = new_rel - rel;
         v[n] = vr + new_rel;
         if (accumulate_force) {
           const Vec2 dp = m * dv;  // momentum given to the material by the rigid body
           impulse += dp;
+          contact_records_.push_back({static_cast<int>(r), pass == ContactPass::AfterP2G ? 0 : 1, xbar, normal, dp,
+                                      cc.sliding});
           work += dp.dot(vr);
           // Frictional work = friction impulse x the slip that goes on (Coulomb force times slip
           // distance); sticking does no frictional work. It becomes heat in the deformable body at
@@ -482,7 +539,7 @@ void Simulation::apply_rigid_contact(std::vector<Vec2>& v, double dt, ContactPas
           // removes at the node is the velocity jump of imposing contact on the grid; with FLIP
           // it is not lost by the particles, so it is not counted as a dissipation (counting it
           // overstated friction heat and broke the energy balance of a cut by ~15%).
-          const double q = m * (vt - new_rel).norm() * new_rel.norm();
+          const double q = m * cc.friction_dv * cc.slip_after;
           friction_work += q;
           G.friction_heat[n] += q;
           if (q > 0.0) {

@@ -10,6 +10,7 @@
 #include "core/grid.hpp"
 #include "core/particles.hpp"
 #include "core/scene.hpp"
+#include "contact/contact_law.hpp"
 #include "contact/rigid_polygon.hpp"
 #include "core/shape_functions.hpp"
 #include "physics/material.hpp"
@@ -77,6 +78,9 @@ class Simulation {
   double max_temperature() const;
   long removed_particles() const { return removed_particles_; }
   long pushed_out_particles() const { return pushed_out_particles_; }  // diagnostics (not restart state)
+  // What the rigid contact did in the last step: one record per contact node and pass, and per
+  // particle the safeguard moved (contact/contact_law.hpp). Diagnostics, not restart state.
+  const std::vector<ContactRecord>& contact_records() const { return contact_records_; }
   double removed_mass() const { return removed_mass_; }
   void set_removed(long count, double mass) { removed_particles_ = count; removed_mass_ = mass; }  // restarts only
   // Conduction sub-cycle state: seconds since the last conduction update and steps since.
@@ -96,6 +100,7 @@ class Simulation {
   void update_grid_momentum(double dt);
   enum class ContactPass { AfterP2G, AfterUpdate, MuslRemap };
   void apply_rigid_contact(std::vector<Vec2>& velocity, double dt, ContactPass pass);
+  void compute_particle_contact_weights();
   void grid_to_particles(double dt);
   void remap_momentum_musl();
   void update_particle_stress(double dt);
@@ -133,6 +138,10 @@ class Simulation {
   std::size_t parallel_min_particles_ = 4096;
   bool parallel_ = true;
   Vec2 friction_box_lo_, friction_box_hi_;  // node index box with frictional heat this step
+  bool particle_contact_ = false;  // scene_.solver.contact_detection == Particle
+  std::vector<std::vector<double>> contact_weight_;  // per rigid body, per node: sum S m phi, kg/m
+  std::vector<std::vector<Vec2>> contact_normal_;    // per rigid body, per node: sum S m phi n
+  std::vector<ContactRecord> contact_records_;  // last step's contact, see contact_records()
   long pushed_out_particles_ = 0;             // particle corrections by the rigid-body safeguard
   long removed_particles_ = 0;                // left the domain (remove_escaping_particles)
   double removed_mass_ = 0.0;                 // kg/m

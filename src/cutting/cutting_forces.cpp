@@ -1,5 +1,6 @@
 #include "cutting/cutting_forces.hpp"
 
+#include <cmath>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -13,6 +14,7 @@ namespace mpmcut {
 
 namespace {
 constexpr double kPerMm = 1e-3;  // N/m -> N/mm
+constexpr int kStateSize = 20;   // doubles in the checkpoint state
 
 std::vector<std::string> force_columns() {
   return {"time_s",
@@ -22,7 +24,29 @@ std::vector<std::string> force_columns() {
           "thrust_force_raw_N_per_mm",
           "cutting_force_N",
           "thrust_force_N",
-          "tool_displacement_m"};
+          "tool_displacement_m",
+          "tool_chip_contact_length_m",
+          "rake_normal_force_N_per_mm",
+          "rake_friction_force_N_per_mm"};
+}
+
+// The rake face of the tool the preset built (cutting/tool_geometry.cpp): its direction up the face,
+// its outward normal, and the tool tip (lowest point of the cutting edge, on the machined surface)
+// at the tool's current position.
+struct RakeFrame {
+  Vec2 up, normal, tip;
+  double edge_radius;
+};
+RakeFrame rake_frame(const CuttingParameters& c, const Simulation& sim) {
+  const double a = c.rake_angle_deg * 3.14159265358979323846 / 180.0;
+  const RigidBodySpec& tool = sim.scene().rigid_bodies[0];
+  RakeFrame f;
+  f.up = Vec2(std::sin(a), std::cos(a));
+  f.normal = Vec2(-std::cos(a), std::sin(a));
+  f.edge_radius = tool.rounding_radius;
+  // Core vertex 0 is the centre of the edge arc (the sharp edge when r = 0).
+  f.tip = tool.polygon.vertices[0] + sim.rigid_bodies()[0].displacement - Vec2(0.0, tool.rounding_radius);
+  return f;
 }
 }  // namespace
 
@@ -33,7 +57,40 @@ CuttingForcesObserver::CuttingForcesObserver(const CuttingParameters& c, const s
   steady_start_time_ = steady_window_start_travel(c) / c.cutting_speed;
 }
 
+void CuttingForcesObserver::RakeSums::add(const RakeSums& o) {
+  time += o.time;
+  length_time += o.length_time;
+  normal += o.normal;
+  friction += o.friction;
+  sliding_normal += o.sliding_normal;
+  safeguard_normal += o.safeguard_normal;
+}
+
 void CuttingForcesObserver::after_step(const Simulation& sim) {
+  // Rake-face contact of this step. Contact length: the largest distance from the tool tip, along the
+  // rake face, of a place where the contact pushed the material away from the tool (a contact node's
+  // mass-weighted material position, or a particle the safeguard moved) on the rake side of the tool
+  // (normal within 90 degrees of the rake face's). Rake forces: only the flat face above the edge arc.
+  const RakeFrame f = rake_frame(c_, sim);
+  RakeSums step;
+  step.time = sim.last_dt();
+  double length = 0.0;
+  for (const ContactRecord& rec : sim.contact_records()) {
+    if (rec.rigid_body != 0) continue;
+    const double dpn = rec.impulse.dot(rec.normal);  // > 0: pushes the material away from the tool
+    if (dpn <= 0.0 || rec.normal.dot(f.normal) <= 0.0) continue;
+    const double along = (rec.position - f.tip).dot(f.up);
+    length = std::max(length, along);
+    if (along <= f.edge_radius || rec.normal.dot(f.normal) < 0.999) continue;  // edge arc, not the face
+    step.normal += dpn;
+    step.friction -= rec.impulse.dot(f.up);  // on the tool: + when the chip drags it up the face
+    if (rec.sliding) step.sliding_normal += dpn;
+    if (rec.pass == 2) step.safeguard_normal += dpn;
+  }
+  step.length_time = length * step.time;
+  last_contact_length_ = length;
+  row_sums_.add(step);
+  if (steady_start_impulse_) steady_sums_.add(step);
   // The impulse at the start of the steady window, for an exact time average over it.
   if (!steady_start_impulse_ && sim.time() >= steady_start_time_) {
     steady_start_impulse_ = sim.rigid_bodies()[0].impulse;
@@ -50,23 +107,38 @@ void CuttingForcesObserver::at_history(const Simulation& sim) {
   if (t > last_row_time_) filtered = (tool.impulse - last_row_impulse_) / (t - last_row_time_);
   last_row_time_ = t;
   last_row_impulse_ = tool.impulse;
+  // Contact length and rake-face forces: time means since the previous row, like the filtered force.
+  const RakeSums& r = row_sums_;
+  const double length = r.time > 0.0 ? r.length_time / r.time : last_contact_length_;
+  const double rn = r.time > 0.0 ? r.normal / r.time : 0.0, rf = r.time > 0.0 ? r.friction / r.time : 0.0;
+  row_sums_ = RakeSums{};
   csv_.row({t, filtered.x() * kPerMm, filtered.y() * kPerMm, tool.force.x() * kPerMm, tool.force.y() * kPerMm,
-            filtered.x() * c_.width_of_cut, filtered.y() * c_.width_of_cut, -tool.displacement.x()});
+            filtered.x() * c_.width_of_cut, filtered.y() * c_.width_of_cut, -tool.displacement.x(), length,
+            rn * kPerMm, rf * kPerMm});
 }
 
 std::string CuttingForcesObserver::checkpoint_state() const {
   const Vec2 start = steady_start_impulse_.value_or(Vec2::Zero());
-  const double v[7] = {last_row_time_,     last_row_impulse_.x(), last_row_impulse_.y(), steady_start_time_,
-                       steady_start_impulse_ ? 1.0 : 0.0, start.x(), start.y()};
+  const RakeSums& a = row_sums_;
+  const RakeSums& b = steady_sums_;
+  const double v[kStateSize] = {last_row_time_, last_row_impulse_.x(), last_row_impulse_.y(), steady_start_time_,
+                                steady_start_impulse_ ? 1.0 : 0.0, start.x(), start.y(),
+                                a.time, a.length_time, a.normal, a.friction, a.sliding_normal, a.safeguard_normal,
+                                b.time, b.length_time, b.normal, b.friction, b.sliding_normal, b.safeguard_normal,
+                                last_contact_length_};
   return std::string(reinterpret_cast<const char*>(v), sizeof v);
 }
 
 void CuttingForcesObserver::restore_checkpoint_state(std::string_view state) {
-  double v[7];
-  if (state.size() != sizeof v)
+  // A checkpoint written before the rake-face sums (7 values) resumes with those sums at zero.
+  double v[kStateSize] = {};
+  if (state.size() != sizeof v && state.size() != 7 * sizeof(double))
     throw std::runtime_error("forces observer: checkpoint state has " + std::to_string(state.size()) +
                              " bytes, expected " + std::to_string(sizeof v));
-  std::memcpy(v, state.data(), sizeof v);
+  std::memcpy(v, state.data(), state.size());
+  row_sums_ = {v[7], v[8], v[9], v[10], v[11], v[12]};
+  steady_sums_ = {v[13], v[14], v[15], v[16], v[17], v[18]};
+  last_contact_length_ = v[19];
   last_row_time_ = v[0];
   last_row_impulse_ = Vec2(v[1], v[2]);
   steady_start_time_ = v[3];
@@ -96,6 +168,24 @@ void CuttingForcesObserver::at_finish(const Simulation& sim, nlohmann::json& sum
     summary["mean_thrust_force_N_per_mm"] = mean.y() * kPerMm;
     summary["mean_cutting_force_N"] = mean.x() * c_.width_of_cut;
     summary["mean_thrust_force_N"] = mean.y() * c_.width_of_cut;
+    const RakeSums& r = steady_sums_;
+    if (r.time > 0.0) {
+      summary["tool_chip_contact_length_m"] = r.length_time / r.time;
+      summary["tool_chip_contact_length_mm"] = 1e3 * r.length_time / r.time;
+      summary["rake_face"] = {
+          {"normal_force_N_per_mm", r.normal / r.time * kPerMm},
+          {"friction_force_N_per_mm", r.friction / r.time * kPerMm},
+          {"friction_to_normal_ratio", r.normal > 0.0 ? r.friction / r.normal : 0.0},
+          {"friction_coefficient", c_.friction},
+          {"sliding_share_of_normal_force", r.normal > 0.0 ? r.sliding_normal / r.normal : 0.0},
+          {"safeguard_share_of_normal_force", r.normal > 0.0 ? r.safeguard_normal / r.normal : 0.0},
+          {"definition",
+           "steady-window means over the flat rake face (above the edge arc) of the contact impulses on the tool: "
+           "normal force, friction force along the face (positive when the chip drags the tool up the face) and "
+           "their ratio, which is the friction coefficient where the chip slides. Contact length: time mean of the "
+           "largest distance from the tool tip, along the rake face, of a contact node (its material position) or "
+           "safeguarded particle at which the contact pushed the material away from the tool"}};
+    }
     summary["steady_window"] = {{"start_time_s", steady_start_time_},
                                 {"end_time_s", sim.time()},
                                 {"start_tool_travel_m", steady_start_time_ * c_.cutting_speed},

@@ -33,6 +33,20 @@ class CuttingForcesObserver final : public RunObserver {
   Vec2 last_row_impulse_ = Vec2::Zero();
   double steady_start_time_ = 0.0;
   std::optional<Vec2> steady_start_impulse_;
+  // Rake-face contact (from the contact records of every step): sums since the last row and over
+  // the steady window. Impulses on the tool in N s/m, length x time in m s.
+  struct RakeSums {
+    double time = 0.0;             // s
+    double length_time = 0.0;      // contact length x dt, m s
+    double normal = 0.0;           // normal impulse on the flat rake face, N s/m
+    double friction = 0.0;         // friction impulse along the rake face (chip dragging the tool up), N s/m
+    double sliding_normal = 0.0;   // part of `normal` taken at nodes that slide (Coulomb limit)
+    double safeguard_normal = 0.0; // part of `normal` from the particle safeguard (no friction there)
+    void add(const RakeSums& o);
+  };
+  RakeSums row_sums_, steady_sums_;
+  double last_contact_length_ = 0.0;  // m, last step
 };
+
 
 }  // namespace mpmcut

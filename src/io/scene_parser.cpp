@@ -248,6 +248,9 @@ SolverSpec read_solver(TableReader t, SolverSpec s = {}) {
     t.fail("mass_scaling_target_time_step", "give either mass_scaling_factor or mass_scaling_target_time_step, not both");
   if (s.mass_scaling_target_time_step > 0.0 && s.fixed_time_step > 0.0)
     t.fail("mass_scaling_target_time_step", "has no meaning with a fixed_time_step; give one of them");
+  s.contact_detection = t.choice<ContactDetection>(
+      "contact_detection", {{"node", ContactDetection::Node}, {"particle", ContactDetection::Particle}},
+      s.contact_detection);
   t.reject_unknown_keys();
   return s;
 }

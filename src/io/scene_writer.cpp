@@ -137,6 +137,8 @@ void write_scene(const Scene& s, std::ostream& out) {
   out << "contact_distance_cells = " << num(s.solver.contact_distance_cells) << "\n";
   out << "mass_scaling_factor = " << num(s.solver.mass_scaling_factor) << "\n";
   out << "mass_scaling_target_time_step = " << num(s.solver.mass_scaling_target_time_step) << "\n";
+  out << "contact_detection = \"" << (s.solver.contact_detection == ContactDetection::Node ? "node" : "particle")
+      << "\"\n";
 
   out << "\n[output]\n";
   out << "snapshot_interval = " << num(s.output.snapshot_interval) << "\n";

@@ -1,0 +1,102 @@
+"""End to end: the tool-chip contact outputs of a cutting run (summary.json and forces.csv).
+
+usage: /usr/bin/python3 test_contact_length.py MPMCUT_BINARY SCRATCH_DIR
+A tiny coarse cut (25 um cells, 1 particle per cell, 0.1 mm of travel) at mu = 0.35 and at mu = 0. Checks:
+- summary.json has tool_chip_contact_length_m and _mm (the same length in two units), a contact length of at
+  least one cell and at most 4 t0 (the chip, 2-3 t0 thick, cannot touch the rake face higher up this early);
+- the rake-face friction/normal ratio is positive and at most mu: the nodal Coulomb law never gives a
+  friction impulse above mu times the normal one (sticking nodes give less), so a ratio above mu means the
+  law or the bookkeeping is wrong; its normal force is a large part of the cutting force (rake 0: the rake
+  face normal is the cutting direction);
+- at mu = 0 the rake-face friction force is zero (to round-off);
+- forces.csv has the contact length and rake-force columns, and their time mean over the steady window
+  agrees with summary.json (rows are time means between rows, the steady window starts on a row here).
+"""
+import csv
+import json
+import os
+import shutil
+import subprocess
+import sys
+
+CASE = """\
+title = "contact-length test: tiny Ti-6Al-4V cut"
+[cutting]
+material = "ti64-johnson-1985"
+cutting_speed = 20.0
+uncut_chip_thickness = 0.1e-3
+cut_length = 100e-6
+cell_size = 25e-6
+particles_per_cell = 1
+snapshots = 2
+friction = {mu}
+steady_start_fraction = 0.5
+"""
+
+
+def fail(msg):
+    print("FAIL:", msg)
+    sys.exit(1)
+
+
+def run(binary, scratch, mu):
+    case = os.path.join(scratch, f"mu{mu}.toml")
+    with open(case, "w") as f:
+        f.write(CASE.format(mu=mu))
+    out = os.path.join(scratch, f"mu{mu}")
+    p = subprocess.run([binary, "run", case, "--out", out, "--force", "--threads", "1", "--no-progress",
+                        "--no-plots"], capture_output=True, text=True, timeout=300)
+    print(p.stdout, p.stderr, sep="\n")
+    if p.returncode != 0:
+        fail(f"run exit status {p.returncode}")
+    with open(os.path.join(out, "summary.json")) as f:
+        summary = json.load(f)
+    with open(os.path.join(out, "forces.csv"), newline="") as f:
+        rows = list(csv.DictReader(f))
+    return summary, rows
+
+
+def main(binary, scratch):
+    shutil.rmtree(scratch, ignore_errors=True)
+    os.makedirs(scratch)
+    h, t0 = 25e-6, 0.1e-3
+
+    summary, rows = run(binary, scratch, 0.35)
+    length = summary.get("tool_chip_contact_length_m")
+    if length is None or abs(summary["tool_chip_contact_length_mm"] - 1e3 * length) > 1e-12:
+        fail(f"contact length keys: {length}, {summary.get('tool_chip_contact_length_mm')}")
+    if not h <= length <= 4 * t0:
+        fail(f"contact length {length * 1e6:.1f} um outside [{h * 1e6:.0f}, {4 * t0 * 1e6:.0f}] um")
+    rake = summary["rake_face"]
+    ratio = rake["friction_to_normal_ratio"]
+    print(f"contact length {length * 1e6:.1f} um, rake friction/normal {ratio:.4f} (mu 0.35), normal "
+          f"{rake['normal_force_N_per_mm']:.1f} N/mm of Fc {summary['mean_cutting_force_N_per_mm']:.1f} N/mm, "
+          f"sliding share {rake['sliding_share_of_normal_force']:.2f}")
+    if not 0.0 < ratio <= 0.35 + 1e-9:
+        fail(f"rake-face friction/normal {ratio} not in (0, mu = 0.35]")
+    if not rake["normal_force_N_per_mm"] > 0.3 * summary["mean_cutting_force_N_per_mm"]:
+        fail("rake-face normal force is not a large part of the cutting force")
+    for key in ("tool_chip_contact_length_m", "rake_normal_force_N_per_mm", "rake_friction_force_N_per_mm"):
+        if key not in rows[0]:
+            fail(f"forces.csv lacks {key}")
+    # Time mean of the rows over the steady window = the summary's mean (rows are exact time means).
+    start = summary["steady_window"]["start_time_s"]
+    prev_t, acc, total = None, 0.0, 0.0
+    for r in rows:
+        t = float(r["time_s"])
+        if prev_t is not None and prev_t >= start - 1e-15:
+            acc += float(r["tool_chip_contact_length_m"]) * (t - prev_t)
+            total += t - prev_t
+        prev_t = t
+    if total <= 0 or abs(acc / total - length) > 0.05 * length:
+        fail(f"forces.csv contact length mean {acc / max(total, 1e-30) * 1e6:.2f} um vs summary {length * 1e6:.2f} um")
+
+    summary0, _ = run(binary, scratch, 0.0)
+    # Zero up to round-off of the impulse's component along the face (1e-9 of the normal force).
+    if abs(summary0["rake_face"]["friction_force_N_per_mm"]) > 1e-9 * summary0["rake_face"]["normal_force_N_per_mm"]:
+        fail(f"mu = 0 but rake friction {summary0['rake_face']['friction_force_N_per_mm']} N/mm")
+    print("OK")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1], sys.argv[2])
