@@ -109,7 +109,7 @@ struct ChipAnalysis {
 };
 
 // The shear angle implied by a chip thickness ratio r = t0/t_c and a rake angle alpha (Merchant's
-// geometry, algorithms.md §7.10: r = sin phi / cos(phi - alpha)), in degrees.
+// geometry, Merchant 1945: r = sin phi / cos(phi - alpha)), in degrees.
 double shear_angle_from_chip_ratio_deg(double chip_ratio, double rake_angle_deg);
 
 // Which particles are the chip (see docs/analysis.md): true per particle.

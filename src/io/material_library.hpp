@@ -33,7 +33,7 @@ const MaterialLibrary& builtin_material_library();
 // definition. fracture_toughness K_IC is converted to fracture_energy G_f = K_IC^2 (1 - nu^2) / E.
 MaterialParameters read_material(TableReader& table, const MaterialLibrary& library);
 
-// G_f = K_IC^2 (1 - nu^2) / E (plane strain, LEFM; algorithms.md §5.3), J/m^2.
+// G_f = K_IC^2 (1 - nu^2) / E (plane strain, LEFM; Mabrouki et al. 2008), J/m^2.
 double fracture_energy_from_toughness(double toughness_Pa_sqrt_m, double youngs_modulus, double poisson_ratio);
 
 }  // namespace mpmcut

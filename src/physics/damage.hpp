@@ -1,6 +1,6 @@
 #pragma once
 // Ductile damage: Johnson-Cook initiation and Hillerborg (fracture-energy) evolution
-// (Johnson & Cook 1985; Hillerborg, Modeer & Petersson 1976; algorithms.md §5; theory_materials.md §5).
+// (Johnson & Cook 1985; Hillerborg, Modeer & Petersson 1976; theory_materials.md §5).
 //
 // Initiation:  eps_f = [D1 + D2 exp(D3 eta)] [1 + D4 ln epsdot*] [1 + D5 T*],  eps_f >= min_failure_strain,
 //              eta = -p/q (tension positive), epsdot* floored at 1, T* clamped to [0, 1];

@@ -1,5 +1,5 @@
 #pragma once
-// Pressure of a solid: the volumetric half of the constitutive update (algorithms.md §4.3).
+// Pressure of a solid: the volumetric half of the constitutive update (theory_materials.md §3).
 // Pressure is positive in compression (p = -tr(sigma)/3).
 //
 //   Linear (hypoelastic):  p_{n+1} = p_n - K dEps_v,   dEps_v = tr(D) dt

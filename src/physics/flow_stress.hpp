@@ -1,5 +1,5 @@
 #pragma once
-// Johnson-Cook flow stress (Johnson & Cook 1983; algorithms.md §4.1):
+// Johnson-Cook flow stress (Johnson & Cook 1983; theory_materials.md §2):
 //
 //   sigma_y = [A + B eps_p^n] [1 + C ln(epsdot*)] [1 - T*^m],
 //   epsdot* = max(epsdot/epsdot0, 1),   T* = clamp((T - T_r)/(T_m - T_r), 0, 1).

@@ -1,6 +1,6 @@
 #pragma once
 // Johnson-Cook thermo-visco-plasticity with JC damage initiation and Hillerborg evolution,
-// plane strain, hypoelastic with the Jaumann rate (algorithms.md §4.2-4.4, §5; theory in
+// plane strain, hypoelastic with the Jaumann rate (references in docs/references.md; theory in
 // docs/theory_materials.md, which maps every equation to the function below that implements it).
 #include "physics/damage.hpp"
 #include "physics/equation_of_state.hpp"

@@ -1,6 +1,6 @@
 #pragma once
 // A single material point driven by a prescribed velocity gradient, without a grid: the
-// constitutive-driver used by the verification tests (algorithms.md §7.6). Each step does what
+// constitutive-driver used by the verification tests (theory_materials.md §2-§6). Each step does what
 // the solver does for one particle: F <- (I + L dt) F, V = det(F) V0, then Material::update.
 // Optionally one component of L (L_yy) is solved for so that a stress condition holds
 // (sigma_yy = 0, or a prescribed triaxiality), which gives mixed-control paths in plane strain.

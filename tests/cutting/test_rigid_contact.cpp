@@ -1,4 +1,4 @@
-// Rigid-body contact with Coulomb friction (multi-velocity-field form, algorithms.md §2.3, §7.5).
+// Rigid-body contact with Coulomb friction (multi-velocity-field form, Bardenhagen et al. 2001; docs/cutting.md).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -32,7 +32,7 @@ TEST(ShortCut, ChipFormsNoPenetrationPositiveForcesEnergyCloses) {
 // with the shear angle between Merchant's phi = 45 - (beta - alpha)/2 and Lee-Shaffer's
 // phi = 45 - beta + alpha, and the shear flow stress k = sigma_y/sqrt(3) from the same
 // Johnson-Cook law over the primary-zone ranges eps_p 1..3, rate 1e3..1e5 1/s, T 298..900 K
-// (algorithms.md §7.10; ti64_data.md §1.7). The band is widened by 30% each way for what
+// (Merchant 1945, Lee & Shaffer 1951; JC flow stress computed). The band is widened by 30% each way for what
 // Merchant ignores (edge radius, serration, heat): about [60, 400] N/mm. A solver with a
 // wrong flow stress, contact force or unit would land far outside.
 TEST(ShortCut, ReferenceCutForceInMerchantBand) {

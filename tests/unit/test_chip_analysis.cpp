@@ -1,6 +1,6 @@
 // Chip analysis on synthetic particle sets with known answers: which particles are the chip,
 // classification (continuous / serrated / discontinuous), chip thickness ratio and the shear angle
-// it implies (Merchant's geometry, algorithms.md §7.10), temperatures by region (docs/analysis.md).
+// it implies (Merchant's geometry, Merchant 1945), temperatures by region (docs/analysis.md).
 #include <gtest/gtest.h>
 
 #include <cmath>

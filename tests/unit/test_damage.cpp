@@ -1,6 +1,6 @@
-// Johnson-Cook damage initiation and Hillerborg evolution (docs/theory_materials.md §5, algorithms.md §5).
+// Johnson-Cook damage initiation and Hillerborg evolution (docs/theory_materials.md §5).
 // Damage constants: Ti-6Al-4V D1..D5 = -0.09, 0.25, -0.5, 0.014, 3.87 (Johnson-Holmquist/Lesuer, the Abaqus
-// deck jc_ti64_abq_builtin.inp [V]; ti64_data.md §1.3), with the worked eps_f values listed there.
+// deck jc_ti64_abq_builtin.inp [V]), with eps_f values worked out by hand from Eq. (5.1).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -22,7 +22,7 @@ double eps_f_closed_form(double eta, double lr, double ts) {
 }
 }  // namespace
 
-// theory §5, Eq. (5.1): the worked values of ti64_data.md §1.3: eta = -1/3, 0, 1/3, 2/3 -> 0.205, 0.160,
+// theory §5, Eq. (5.1): values worked out by hand: eta = -1/3, 0, 1/3, 2/3 -> 0.205, 0.160,
 // 0.122, 0.089 at epsdot* = 1, T* = 0; and eta = 0, epsdot* = 1e5, T* = 0.4 -> 0.473.
 TEST(JohnsonCookDamage, FailureStrainTabulatedValues) {
   const JohnsonCookDamage d(ti64_damage());
@@ -34,7 +34,7 @@ TEST(JohnsonCookDamage, FailureStrainTabulatedValues) {
   EXPECT_NEAR(d.failure_strain(0.4, 3.0, 0.2), eps_f_closed_form(0.4, 3.0, 0.2), 1e-15);
 }
 
-// theory §5, Eq. (5.1) and pitfall 8 of algorithms.md: with tension-positive eta and D3 < 0, eps_f must
+// theory §5, Eq. (5.1) (Johnson & Cook 1985 sign of D3): with tension-positive eta and D3 < 0, eps_f must
 // decrease as eta rises; D1 < 0 makes the formula negative above eta = 2.04, so it is clamped.
 TEST(JohnsonCookDamage, FailureStrainFallsWithTriaxialityAndIsClamped) {
   const JohnsonCookDamage d(ti64_damage());

@@ -1,8 +1,8 @@
-// Johnson-Cook flow stress sigma_y(eps_p, epsdot, T) (docs/theory_materials.md §2, algorithms.md §4.1),
-// the equation of state (theory §3, algorithms.md §4.3) and the return-mapping solve (theory §4).
+// Johnson-Cook flow stress sigma_y(eps_p, epsdot, T) (docs/theory_materials.md §2; Johnson & Cook 1983),
+// the equation of state (theory §3) and the return-mapping solve (theory §4).
 // Parameters: Ti-6Al-4V, Johnson 1985 set A = 862 MPa, B = 331 MPa, n = 0.34, C = 0.012, m = 0.8,
-// epsdot0 = 1/s, T_r = 298 K, T_m = 1878 K (ti64_data.md §1.1, §1.7); E = 113.8 GPa, nu = 0.342,
-// rho = 4430, c = 526.3 (ti64_data.md §1.4).
+// epsdot0 = 1/s, T_r = 298 K, T_m = 1878 K (docs/materials.md); E = 113.8 GPa, nu = 0.342,
+// rho = 4430, c = 526.3 (Payette; docs/materials.md).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -21,8 +21,8 @@ using mpmcut::testing::ti64_johnson_1985;
 namespace {
 }  // namespace
 
-// theory §2, Eq. (2.1): the self-check values of ti64_data.md §1.7 (Johnson 85 row, T_m = 1878 K),
-// computed there by hand: 862, 1248, 815, 540 MPa.
+// theory §2, Eq. (2.1): self-check values (Johnson 85 set, T_m = 1878 K),
+// computed by hand: 862, 1248, 815, 540 MPa.
 TEST(JohnsonCookFlowStress, ReproducesTabulatedTi64Values) {
   const JohnsonCookFlowStress f(ti64_johnson_1985());
   EXPECT_NEAR(f.yield_stress(0.0, 1.0, 298.0), 862e6, 0.5e6);
@@ -152,8 +152,8 @@ TEST(EquationOfState, LinearIncrement) {
   EXPECT_FALSE(eos.has_bulk_viscosity());
 }
 
-// theory §3, Eq. (3.2): Mie-Grueneisen (Steinberg Ti-6Al-4V c0 = 5130, s = 1.028, Gamma0 = 1.23, ti64_data
-// §1.5 [M]): reduces to rho0 c0^2 mu at small mu, zero at the reference state, closed form in compression,
+// theory §3, Eq. (3.2): Mie-Grueneisen (Steinberg 1996 Ti-6Al-4V c0 = 5130, s = 1.028, Gamma0 = 1.23
+// [M]): reduces to rho0 c0^2 mu at small mu, zero at the reference state, closed form in compression,
 // thermal pressure Gamma0 rho0 c (T - T_r), and its tangent modulus matches a finite difference.
 TEST(EquationOfState, MieGruneisen) {
   MaterialParameters m = ti64_johnson_1985();

@@ -1,6 +1,6 @@
 // The built-in material library (materials/*.toml, compiled in): every set is present with the
-// published numbers (ti64_data.md §1.1, §1.3), the toughness -> fracture energy conversion
-// (algorithms.md §5.3), and library files are validated like case files.
+// published numbers (docs/materials.md, docs/references.md), the toughness -> fracture energy conversion
+// (plane-strain LEFM), and library files are validated like case files.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -16,7 +16,7 @@ struct JcSet {
   double A_MPa, B_MPa, n, C, m, melting_K, room_K;
 };
 
-// ti64_data.md §1.1 (and the choices documented in materials/ti6al4v.toml).
+// docs/materials.md (and the choices documented in materials/ti6al4v.toml).
 const JcSet kTi64Sets[] = {
     {"ti64-johnson-1985", 862.0, 331.0, 0.34, 0.012, 0.8, 1878.0, 298.0},
     {"ti64-lee-lin-1998", 782.7, 498.4, 0.28, 0.028, 1.0, 1878.0, 298.0},
@@ -41,18 +41,18 @@ TEST(MaterialLibrary, HasTheTi64JohnsonCookSetsWithPublishedConstants) {
     EXPECT_DOUBLE_EQ(m->melting_temperature, s.melting_K);
     EXPECT_DOUBLE_EQ(m->room_temperature, s.room_K);
     EXPECT_DOUBLE_EQ(m->reference_strain_rate, 1.0);
-    // Johnson–Holmquist / Lesuer damage constants (ti64_data.md §1.3).
+    // Johnson–Holmquist / Lesuer damage constants (Abaqus VUMAT deck [V]).
     EXPECT_TRUE(m->damage_enabled);
     EXPECT_DOUBLE_EQ(m->jc_D1, -0.09);
     EXPECT_DOUBLE_EQ(m->jc_D2, 0.25);
     EXPECT_DOUBLE_EQ(m->jc_D3, -0.5);
     EXPECT_DOUBLE_EQ(m->jc_D4, 0.014);
     EXPECT_DOUBLE_EQ(m->jc_D5, 3.87);
-    // Elastic and thermal constants of ti64_data.md §7; P-wave speed 6313 m/s (§1.4).
+    // Elastic and thermal constants of docs/materials.md; P-wave speed 6313 m/s (computed).
     EXPECT_DOUBLE_EQ(m->density, 4430.0);
     EXPECT_NEAR(m->p_wave_speed(), 6313.0, 5.0);
     EXPECT_GT(m->specific_heat, 0.0);
-    // G_f from K_IC = 65 MPa sqrt(m): 32.8 kJ/m^2 (ti64_data.md §1.6).
+    // G_f from K_IC = 65 MPa sqrt(m): 32.8 kJ/m^2 (computed).
     EXPECT_NEAR(m->fracture_energy, 32.8e3, 0.1e3);
   }
 }
@@ -96,8 +96,8 @@ TEST(MaterialLibrary, NamesListsEverySetOnce) {
   EXPECT_NE(std::find(names.begin(), names.end(), "ti64-seo-2005"), names.end());
 }
 
-// algorithms.md §5.3: G_f = K_IC^2 (1 - nu^2) / E; E = 113.8 GPa, nu = 0.342:
-// K_IC = 55 -> 23.5, 75 -> 43.6, 100 -> 78 kJ/m^2 (ti64_data.md §1.6).
+// Plane-strain LEFM: G_f = K_IC^2 (1 - nu^2) / E; E = 113.8 GPa, nu = 0.342:
+// K_IC = 55 -> 23.5, 75 -> 43.6, 100 -> 78 kJ/m^2 (computed).
 TEST(MaterialLibrary, FractureToughnessToEnergyPlaneStrain) {
   EXPECT_NEAR(fracture_energy_from_toughness(55e6, 113.8e9, 0.342), 23.5e3, 0.1e3);
   EXPECT_NEAR(fracture_energy_from_toughness(75e6, 113.8e9, 0.342), 43.6e3, 0.1e3);

@@ -149,7 +149,7 @@ TEST(SceneParser, CollidingDisksIsSulsky1994) {
   EXPECT_DOUBLE_EQ(s.bodies[1].shape.disk.radius, 0.2);
   EXPECT_EQ(s.bodies[0].velocity, Vec2(0.1, 0.1));
   EXPECT_EQ(s.bodies[1].velocity, Vec2(-0.1, -0.1));
-  // Kinetic energy 2 * (1/2) rho pi r^2 |v|^2 = 2.513 J per unit thickness (algorithms.md §7.4).
+  // Kinetic energy 2 * (1/2) rho pi r^2 |v|^2 = 2.513 J per unit thickness (Sulsky 1994 disks).
   const double ke = 2 * 0.5 * 1000.0 * std::numbers::pi * 0.04 * 0.02;
   EXPECT_NEAR(ke, 2.513, 1e-3);
 }
@@ -408,7 +408,7 @@ TEST(SceneMaterials, LibrarySetWithPerKeyOverride) {
 }
 
 TEST(SceneMaterials, FractureToughnessBecomesFractureEnergy) {
-  // K_IC = 65 MPa sqrt(m), E = 113.8 GPa, nu = 0.342: G_f = K^2 (1 - nu^2) / E (algorithms.md §5.3).
+  // K_IC = 65 MPa sqrt(m), E = 113.8 GPa, nu = 0.342: G_f = K^2 (1 - nu^2) / E (plane strain).
   const Scene s = parse_scene(
       edit("library = \"elastic-unit\"", "library = \"ti64-johnson-1985\"\nfracture_toughness = 55.0e6"), "case.toml");
   EXPECT_NEAR(s.materials[0].fracture_energy, 55e6 * 55e6 * (1 - 0.342 * 0.342) / 113.8e9, 1e-6);

@@ -1,4 +1,4 @@
-// Shape-function properties (algorithms.md §1.3; Bardenhagen & Kober 2004): partition of
+// Shape-function properties (Bardenhagen & Kober 2004): partition of
 // unity, zero gradient sum, linear completeness and grad-x = I, at random interior positions.
 #include <gtest/gtest.h>
 

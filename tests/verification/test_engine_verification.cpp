@@ -1,4 +1,4 @@
-// Verification of the explicit MPM engine against analytic solutions (algorithms.md §7).
+// Verification of the explicit MPM engine against analytic solutions (docs/references.md).
 #include <gtest/gtest.h>
 #include <omp.h>
 

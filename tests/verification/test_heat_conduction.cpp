@@ -1,4 +1,4 @@
-// Grid heat conduction (algorithms.md §4.4 and §7.9): a semi-infinite slab at T0 whose face is
+// Grid heat conduction (Nairn's transport structure, docs/references.md): a semi-infinite slab at T0 whose face is
 // held at Ts from t = 0 follows T(x,t) = T0 + (Ts - T0) erfc(x / (2 sqrt(alpha t))).
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Hillerborg objectivity on the grid (algorithms.md §5.4, §7.7; docs/theory_materials.md §5.3-§5.4, §6,
+// Hillerborg objectivity on the grid (Hillerborg 1976, Bazant & Oh 1983; docs/theory_materials.md §5.3-§5.4, §6,
 // and its "Grid-level verification" section): the energy dissipated after damage initiation per unit
 // crack area equals G_f for the cell sizes h, h/2, h/4, because the Hillerborg length is the cell size
 // (StepContext::cell_size) and strain localises on the grid into a band one cell wide, whatever the
@@ -37,7 +37,7 @@ using namespace mpmcut::testing;
 
 namespace {
 
-constexpr double kE = 113.8e9, kNu = 0.342, kRho = 4430.0;  // Ti-6Al-4V elastic constants (ti64_data.md §1.4)
+constexpr double kE = 113.8e9, kNu = 0.342, kRho = 4430.0;  // Ti-6Al-4V elastic constants (Payette)
 constexpr double kYield = 200e6;   // Pa: low, so that u_f/h stays below 1 on the finest grid with a G_f
                                    // large against the elastic release h Y
 constexpr double kFractureEnergy = 500.0;  // J/m^2: u_f = 2 G_f/sigma_y = 5 um (linear law)
@@ -188,7 +188,7 @@ TEST(HillerborgShearBand, ExponentialLawDissipatesFractureEnergyForThreeCellSize
   for (double h : {40e-6, 20e-6, 10e-6}) expect_fracture_energy(h, DamageEvolution::Exponential, 2);
 }
 
-// The band is the cell whatever the particle count (algorithms.md §5.4): 1x1 (the seed is the whole
+// The band is the cell whatever the particle count (crack band): 1x1 (the seed is the whole
 // cell) and 3x3 (the seed is a third of it) give G_f too.
 TEST(HillerborgShearBand, IndependentOfParticlesPerCell) {
   for (int ppc : {1, 3}) expect_fracture_energy(20e-6, DamageEvolution::Linear, ppc);

@@ -1,10 +1,10 @@
 // Homogeneous Johnson-Cook material-point tests through the full constitutive update (no grid):
-// algorithms.md §7.6 and §7.7, docs/theory_materials.md §2-§6. One particle, constant velocity
+// docs/theory_materials.md §2-§6. One particle, constant velocity
 // gradient, F <- (I + L dt) F, V = det(F) V0, then JohnsonCookMaterial::update.
 // Ti-6Al-4V, Johnson 1985 set: A = 862 MPa, B = 331 MPa, n = 0.34, C = 0.012, m = 0.8, epsdot0 = 1/s,
-// T_r = 298 K, T_m = 1878 K (ti64_data.md §1.1, §1.7); E = 113.8 GPa, nu = 0.342, rho = 4430,
-// c = 526.3 J/(kg K), chi = 0.9 (ti64_data.md §1.4); damage D1..D5 = -0.09, 0.25, -0.5, 0.014, 3.87
-// (ti64_data.md §1.3).
+// T_r = 298 K, T_m = 1878 K (docs/materials.md); E = 113.8 GPa, nu = 0.342, rho = 4430,
+// c = 526.3 J/(kg K), chi = 0.9 (Payette; ETH IWF); damage D1..D5 = -0.09, 0.25, -0.5, 0.014, 3.87
+// (Johnson-Holmquist/Lesuer; docs/references.md).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -70,7 +70,7 @@ double at_plastic_strain(const std::vector<MaterialPointRecord>& h, double eps,
 }
 }  // namespace
 
-// theory §4, Eq. (4.5) (algorithms.md §4.2 step 6, §7.6): whenever the step is plastic, the end-of-step
+// theory §4, Eq. (4.5) (radial return): whenever the step is plastic, the end-of-step
 // state lies on the yield surface, q = sigma_y(eps_p, epsdot, T), to 1e-8, along plane-strain tension
 // (sigma_yy = 0), simple shear and uniaxial-strain compression, rate-dependent, with adiabatic heating,
 // with and without rate smoothing.
@@ -177,7 +177,7 @@ TEST(JohnsonCookMaterialPoint, MeltCarriesNoDeviator) {
   }
 }
 
-// algorithms.md §7.6 rate floor and T* clamp: tiny rates (1e-8/s) and temperatures below room give finite
+// Rate floor and T* clamp (theory §2): tiny rates (1e-8/s) and temperatures below room give finite
 // results and the quasi-static, room-temperature yield surface A + B eps^n.
 TEST(JohnsonCookMaterialPoint, TinyRatesAndColdTemperaturesStayFinite) {
   MaterialParameters m = ti64();
@@ -197,7 +197,7 @@ TEST(JohnsonCookMaterialPoint, TinyRatesAndColdTemperaturesStayFinite) {
   }
 }
 
-// algorithms.md §7.6: in simple shear eps_eq = gamma/sqrt(3); at large gamma eps_p is that minus the
+// In simple shear eps_eq = gamma/sqrt(3); at large gamma eps_p is that minus the
 // elastic part q/(3G) (loose: Jaumann rotation and heating make it approximate).
 TEST(JohnsonCookMaterialPoint, SimpleShearPlasticStrainAtLargeShear) {
   const MaterialParameters m = ti64();
@@ -211,7 +211,7 @@ TEST(JohnsonCookMaterialPoint, SimpleShearPlasticStrainAtLargeShear) {
   EXPECT_EQ(r.volume, 1.0);
 }
 
-// theory §4, Eq. (4.7) (algorithms.md §4.4, §7.6): the driver temperature equals the adiabatic ODE
+// theory §4, Eq. (4.7) (Taylor & Quinney 1934): the driver temperature equals the adiabatic ODE
 // dT/deps_p = chi sigma_y(eps_p, epsdot, T)/(rho c) integrated independently with RK4 along the recorded
 // rate history, to 1e-3 of the temperature rise; and the energy bookkeeping matches m c dT.
 TEST(JohnsonCookMaterialPoint, AdiabaticHeatingMatchesRK4) {
@@ -249,7 +249,7 @@ TEST(JohnsonCookMaterialPoint, AdiabaticHeatingMatchesRK4) {
 // theory §5, Eq. (5.2) through the full update: omega reaches 1 at eps_p = eps_f(eta) (within 1 %; the
 // split step makes it much closer). eta = 0 from unconstrained simple shear; eta = -1/3, 1/3, 2/3 by
 // solving L_yy each step for the triaxiality. Quasi-static (epsdot* < 1) and isothermal, so eps_f depends
-// on eta only; the tabulated values are ti64_data.md §1.3.
+// on eta only; the values are worked out by hand from Eq. (5.1).
 TEST(JohnsonCookMaterialPoint, InitiationAtFailureStrain) {
   MaterialParameters m = with_damage(ti64());
   m.taylor_quinney = 0.0;
@@ -398,7 +398,7 @@ TEST(JohnsonCookMaterialPoint, TensileCutOffAfterInitiationOpensAndFails) {
     m.jc_C = 0.0;
     m.taylor_quinney = 0.0;
     m.eos = eos;
-    m.mg_c0 = 5130.0;  // ti64_data.md §1.5
+    m.mg_c0 = 5130.0;  // Steinberg 1996 [M]
     m.mg_s = 1.028;
     m.mg_gamma0 = 1.23;
     const JohnsonCookMaterial jc(m);
@@ -430,7 +430,7 @@ TEST(JohnsonCookMaterialPoint, TensileCutOffAfterInitiationOpensAndFails) {
   }
 }
 
-// theory §5, Eq. (5.5) and algorithms.md §5.5: a fully failed particle carries no tension and no shear but
+// theory §5, Eq. (5.5) (as MPM3D, Zhang, Chen & Liu 2016): a fully failed particle carries no tension and no shear but
 // keeps compression (and its mass).
 TEST(JohnsonCookMaterialPoint, FailedParticleKeepsCompressionOnly) {
   const MaterialParameters m = with_damage(ti64());
@@ -482,8 +482,8 @@ TEST(JohnsonCookMaterialPoint, MieGruneisenPressureFollowsDensity) {
   EXPECT_GT(jc.wave_speed(d.particles(), 0), std::sqrt((4430.0 * 5130.0 * 5130.0) / 4430.0));
 }
 
-// theory §7.1: linear EOS P-wave speed sqrt((K + 4G/3)/rho) = 6313 m/s for Ti-6Al-4V (ti64_data.md §1.4,
-// computed) at the reference density, at the current density otherwise; failed or molten particles have
+// theory §7.1: linear EOS P-wave speed sqrt((K + 4G/3)/rho) = 6313 m/s for Ti-6Al-4V (computed
+// from E, nu, rho) at the reference density, at the current density otherwise; failed or molten particles have
 // no shear stiffness, and an opened failed particle does not raise the speed through its low density.
 TEST(JohnsonCookMaterialPoint, WaveSpeed) {
   const MaterialParameters m = with_damage(ti64());

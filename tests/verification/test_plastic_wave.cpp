@@ -1,4 +1,4 @@
-// Elastic-plastic wave in uniaxial strain (algorithms.md §7.3; docs/theory_materials.md §1-§4, the
+// Elastic-plastic wave in uniaxial strain (elastic precursor; docs/theory_materials.md §1-§4, the
 // "Grid-level verification" section): a column of elastic-perfectly plastic Johnson-Cook material
 // (B = 0, C = 0, no heating, no damage, linear EOS) moving at -v0 hits a fixed wall at x = 0.
 //
@@ -30,7 +30,7 @@ using namespace mpmcut::testing;
 
 namespace {
 
-// Ti-6Al-4V elastic constants and the Johnson 1985 A (ti64_data.md §1.1, §1.4), made perfectly plastic.
+// Ti-6Al-4V elastic constants and the Johnson 1985 A (docs/materials.md), made perfectly plastic.
 MaterialParameters perfectly_plastic_ti64() {
   MaterialParameters m;
   m.name = "ti64-perfectly-plastic";
