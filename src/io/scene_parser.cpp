@@ -108,6 +108,10 @@ void apply_override(toml::table& root, const std::string& text, InputSource& sou
     if (!step.index) {
       if (last) {
         assign([&](auto&& v) { table->insert_or_assign(step.key, std::move(v)); });
+        // One quantity in two spellings (m/s or m/min): the override replaces whichever the file
+        // used, so that `sweep --speeds` works on a case written in m/min.
+        if (walked == "cutting.cutting_speed") table->erase("cutting_speed_m_per_min");
+        if (walked == "cutting.cutting_speed_m_per_min") table->erase("cutting_speed");
         return;
       }
       // A missing table ([thermal], say) is created; a key outside the schema is then reported

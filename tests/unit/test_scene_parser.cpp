@@ -513,5 +513,18 @@ rounding_radius = 0.05
   expect_same_scene(back, s);
 }
 
+// A speed set on the command line replaces the file's speed in either spelling (sweep --speeds on a
+// case written in m/min), and the other way round.
+TEST(SceneOverrides, CuttingSpeedReplacesTheOtherSpelling) {
+  const std::string cut = "[cutting]\nmaterial = \"ti64-johnson-1985\"\ncutting_speed_m_per_min = 100.0\n"
+                          "uncut_chip_thickness = 0.1e-3\ncut_length = 0.1e-3\ncell_size = 20e-6\n";
+  EXPECT_DOUBLE_EQ(parse_scene(cut, "case.toml", {"cutting.cutting_speed=5"}).cutting->cutting_speed, 5.0);
+  const std::string si = "[cutting]\nmaterial = \"ti64-johnson-1985\"\ncutting_speed = 2.0\n"
+                         "uncut_chip_thickness = 0.1e-3\ncut_length = 0.1e-3\ncell_size = 20e-6\n";
+  EXPECT_DOUBLE_EQ(parse_scene(si, "case.toml", {"cutting.cutting_speed_m_per_min=120"}).cutting->cutting_speed, 2.0);
+  // Both in the file itself is still an error.
+  EXPECT_NE(error_of(si + "cutting_speed_m_per_min = 120\n").find("not both"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace mpmcut
