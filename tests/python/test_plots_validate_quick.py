@@ -6,7 +6,8 @@ Checks:
   (h = 0.01 mm, r_n = 39.8 um) has cell = t0/10 = 1 um, that of h = 0.2 mm (r_n = 38.8 um) r_n/4 = 9.7 um;
   --h / --speeds-m-per-min select (intersected); a value outside the matrix is an error naming the option.
 - Resumption: `--quick --conditions A,B`, then `--quick` (its 5 conditions, a superset): the logs of A and B say
-  "kept:", the others do not; the report says 5 of 37 complete.
+  "kept:", the others do not; the report says 5 of 37 complete; a third part of one condition still reports all 5
+  (4 of them as "earlier run").
 - The report's arithmetic: validation_errors.csv, validation_goals.csv and validation_trends.csv recomputed here
   from validation_runs.csv and the data file (errors, worst, slope of Fc over ln v, signs, goals met).
 - validation.csv has Fc/Ft/Ft/Fc/t_c rows with the measured means; chip-type rows; validation.md states b = 1 mm,
@@ -173,6 +174,16 @@ def main(binary, scratch):
     for text in ("b = 1 mm", "--quick", "Klippel", "Sutter", "## Goals", "## Not run yet"):
         if text not in md:
             fail(f"validation.md does not mention '{text}'")
+
+    # A later part that runs one condition still reports the others, complete from the earlier runs.
+    validate(binary, "--quick", "--no-plots", "--conditions", "forces_h0.04mm_vc400.1mpmin", "--out", out)
+    origins = {r["condition"]: r["origin"] for r in read_csv(os.path.join(out, "validation_runs.csv"))}
+    if len(origins) != 5 or origins.pop("forces_h0.04mm_vc400.1mpmin") != "this run" or \
+            set(origins.values()) != {"earlier run"}:
+        fail(f"origins after a one-condition part: {origins}")
+    with open(os.path.join(out, "validation.md")) as f:
+        if "5 of the 37 conditions of the matrix are complete" not in f.read():
+            fail("a one-condition part does not report the 5 complete conditions")
 
     rows = read_csv(os.path.join(out, "validation.csv"))
     by = {(r["condition"].split(",")[0] + "," + r["condition"].split(",")[1], r["quantity"]): r for r in rows
