@@ -8,13 +8,19 @@ Writes into VALIDATION_DIR:
   validation_forces.png  Fc and Ft vs cutting speed at h = 0.1 mm: every measured condition mean with its min-max
                          range as error bars (tests marked "short" as open symbols), simulated runs as large symbols;
                          the measured forces in N are drawn as N/mm under the ASSUMPTION b = 1 mm (stated on the plot);
-  validation_ratio.png   Ft/Fc vs cutting speed at h = 0.1 mm (independent of b), same symbols.
+  validation_ratio.png   Ft/Fc vs cutting speed at h = 0.1 mm (independent of b), same symbols;
+  validation_parity.png  simulated vs measured Fc, Ft, Ft/Fc and chip thickness t_c of every complete force
+                         condition: 45-degree line, +-15 % band, measured min-max as horizontal bars;
+  validation_speed.png   Fc and Ft vs cutting speed (log axis) at each h with two or more measured speeds;
+  validation_thickness.png  Fc and Ft vs h at each speed with two or more measured thicknesses.
+In the last two, measured means with min-max bars for every condition of the data file, simulated as markers.
 """
 import os
 import sys
 
 import plot_style as ps
 from plot_style import plt
+from matplotlib.ticker import FuncFormatter, NullFormatter
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DATA = os.path.join(HERE, "..", "data", "experiments", "ti64_klippel2024_orthogonal_forces.csv")
@@ -101,7 +107,136 @@ def main(argv):
     fig.text(0.01, -0.02, "Bars: extreme combinations of the min–max ranges of Ft and Fc. Tool rake/clearance "
              "of the experiments not in the data file; simulation: 0°/11° assumed.", fontsize=6.5, color="0.3", va="top")
     ps.save(fig, os.path.join(d, "validation_ratio.png"))
+
+    all_runs = [r for r in ps.read_csv_rows(os.path.join(d, "validation_runs.csv")) if r["kind"] == "forces"]
+    all_measured = read_measured(DATA)
+    note = "Measured N as N/mm with ASSUMED b = 1 mm." + (" --quick: not converged." if quick else "")
+    parity(d, all_runs, all_measured, note)
+    trend_panels(d, all_runs, all_measured, "vc_m_per_min", "h_mm", note)
+    trend_panels(d, all_runs, all_measured, "h_mm", "vc_m_per_min", note)
     return 0
+
+
+def same(a, b):
+    return a is not None and b is not None and abs(a - b) <= 1e-6 * max(1.0, abs(b))
+
+
+def measured_of(run, measured):
+    f = ps.to_float
+    for m in measured:
+        if same(f(m["h_mm"]), f(run["h_mm"])) and same(f(m["vc_m_per_min"]), f(run["speed_m_per_min"])):
+            return m
+    return None
+
+
+def complete_runs(runs):
+    f = ps.to_float
+    return [r for r in runs if r["status"] == "complete" and f(r["cutting_force_N_per_mm"]) is not None
+            and f(r["thrust_force_N_per_mm"]) is not None]
+
+
+def parity(d, runs, measured, note):
+    """Simulated vs measured Fc, Ft, Ft/Fc, t_c with the 45-degree line and a +-15 % band."""
+    f = ps.to_float
+    fig, axes = plt.subplots(2, 2, figsize=(7.6, 7.0))
+    panels = (("Fc", "$F_c$ (N/mm)"), ("Ft", "$F_t$ (N/mm)"), ("ratio", "$F_t/F_c$ (–)"), ("tc", "chip thickness $t_c$ (µm)"))
+    for ax, (q, label) in zip(axes.flat, panels):
+        xs, ys, lo, hi = [], [], [], []
+        for r in complete_runs(runs):
+            m = measured_of(r, measured)
+            if m is None:
+                continue
+            fc_s, ft_s = f(r["cutting_force_N_per_mm"]), f(r["thrust_force_N_per_mm"])
+            if q == "Fc":
+                x, y, a, b = f(m["Fc_mean_N"]), fc_s, f(m["Fc_min_N"]), f(m["Fc_max_N"])
+            elif q == "Ft":
+                x, y, a, b = f(m["Ff_mean_N"]), ft_s, f(m["Ff_min_N"]), f(m["Ff_max_N"])
+            elif q == "ratio":
+                x, y = f(m["Ff_mean_N"]) / f(m["Fc_mean_N"]), ft_s / fc_s
+                a, b = f(m["Ff_min_N"]) / f(m["Fc_max_N"]), f(m["Ff_max_N"]) / f(m["Fc_min_N"])
+            else:
+                x, y = f(m.get("chip_thickness_um", "")), f(r.get("chip_thickness_um", ""))
+                a = b = x
+            if x is None or y is None:
+                continue
+            xs.append(x), ys.append(y), lo.append(x - a), hi.append(b - x)
+        if xs:
+            top = 1.15 * max(xs + ys)
+            ax.fill_between([0, top], [0, 0.85 * top], [0, 1.15 * top], color="0.9", label="±15 %")
+            ax.plot([0, top], [0, top], color="0.4", lw=0.8, label="simulated = measured")
+            ax.errorbar(xs, ys, xerr=[lo, hi], fmt="D", ms=5, color="#2e8b57", mec="black", mew=0.6, capsize=2,
+                        lw=0.8, label="condition (bars: measured min–max)")
+            ax.set_xlim(0, top)
+            ax.set_ylim(0, top)
+        else:
+            ax.text(0.5, 0.5, "no complete condition with a value", ha="center", va="center", transform=ax.transAxes,
+                    fontsize=8, color="0.4")
+        ax.set_aspect("equal", adjustable="box")
+        ax.set_xlabel(f"measured {label}")
+        ax.set_ylabel(f"simulated {label}")
+    axes.flat[0].legend(frameon=False, fontsize=6.5, loc="upper left")
+    fig.suptitle("Ti-6Al-4V, Klippel et al. 2024: simulated vs measured, every complete force condition")
+    fig.text(0.01, 0.0, note + " t_c: simulated t0 / chip thickness ratio vs measured h_avg.", fontsize=6.5,
+             color="0.3", va="top")
+    ps.save(fig, os.path.join(d, "validation_parity.png"))
+
+
+def trend_panels(d, runs, measured, x_key, group_key, note):
+    """Fc and Ft vs x_key (speed or h), one panel per value of group_key with two or more measured x."""
+    f = ps.to_float
+    run_key = {"vc_m_per_min": "speed_m_per_min", "h_mm": "h_mm"}
+    groups = {}
+    for m in measured:
+        groups.setdefault(f(m[group_key]), []).append(m)
+    groups = {g: ms for g, ms in sorted(groups.items()) if len({f(m[x_key]) for m in ms}) >= 2}
+    by_speed = x_key == "vc_m_per_min"
+    name = "validation_speed.png" if by_speed else "validation_thickness.png"
+    n = max(1, len(groups))
+    cols = min(n, 2)
+    rows = (n + cols - 1) // cols
+    fig, axes = plt.subplots(rows, cols, figsize=(4.4 * cols, 3.8 * rows), squeeze=False)
+    done = complete_runs(runs)
+    for ax, (g, ms) in zip(axes.flat, groups.items()):
+        ms = sorted(ms, key=lambda m: f(m[x_key]))
+        for key, color, label in (("Fc", ps.COLOR_FC, "$F_c$"), ("Ff", ps.COLOR_FT, "$F_t$")):
+            x = [f(m[x_key]) for m in ms]
+            y = [f(m[f"{key}_mean_N"]) for m in ms]
+            lo = [yy - f(m[f"{key}_min_N"]) for yy, m in zip(y, ms)]
+            hi = [f(m[f"{key}_max_N"]) - yy for yy, m in zip(y, ms)]
+            ax.errorbar(x, y, yerr=[lo, hi], fmt="o-", ms=3.5, color=color, mfc="white", capsize=2, lw=0.7,
+                        label=f"{label} measured")
+            col = "cutting_force_N_per_mm" if key == "Fc" else "thrust_force_N_per_mm"
+            sim = sorted((f(r[run_key[x_key]]), f(r[col])) for r in done if same(f(r[run_key[group_key]]), g))
+            if sim:
+                ax.plot([p[0] for p in sim], [p[1] for p in sim], "D", ms=7, color=color, mec="black", mew=0.7,
+                        label=f"{label} simulated", zorder=5)
+        if by_speed:
+            ax.set_xscale("log")
+            xs = [f(m[x_key]) for m in ms]
+            ax.set_xticks([t for t in (10, 20, 50, 100, 200, 500) if min(xs) / 1.2 <= t <= max(xs) * 1.2])
+            ax.xaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
+            ax.xaxis.set_minor_formatter(NullFormatter())
+            ax.set_xlabel("cutting speed $v_c$ (m/min)")
+            ax.set_title(f"h = {g:g} mm", fontsize=9)
+        else:
+            ax.set_xlabel("uncut chip thickness h (mm)")
+            ax.set_xlim(left=0)
+            ax.set_title(f"$v_c$ = {g:g} m/min", fontsize=9)
+        ax.set_ylabel("force (N/mm)")
+        ax.set_ylim(bottom=0)
+    for ax in list(axes.flat)[len(groups):]:
+        ax.axis("off")
+    labels = {}
+    for ax in axes.flat:
+        for handle, label in zip(*ax.get_legend_handles_labels()):
+            labels.setdefault(label, handle)
+    if labels:
+        axes.flat[0].legend(labels.values(), labels.keys(), frameon=False, fontsize=6.5, loc="best")
+    fig.suptitle("Fc and Ft against " + ("speed at each h" if by_speed else "h at each speed")
+                 + " (measured: Klippel et al. 2024, mean and min–max)", fontsize=9)
+    fig.tight_layout(rect=(0, 0.01, 1, 0.96))
+    fig.text(0.01, 0.0, note, fontsize=6.5, color="0.3", va="top")
+    ps.save(fig, os.path.join(d, name))
 
 
 if __name__ == "__main__":

@@ -1,8 +1,10 @@
 #include "app/validate_command.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iostream>
+#include <set>
 #include <sstream>
 #include <thread>
 
@@ -11,10 +13,14 @@
 
 #include "analysis/chip_analysis.hpp"
 #include "app/plot_command.hpp"
-#include "studies/measured_conditions.hpp"
-#include "studies/task_farm.hpp"
+#include "app/run_case.hpp"
 #include "app/sweep_command.hpp"
 #include "io/atomic_file.hpp"
+#include "io/input_error.hpp"
+#include "io/scene_parser.hpp"
+#include "studies/measured_conditions.hpp"
+#include "studies/task_farm.hpp"
+#include "studies/validation_metrics.hpp"
 
 namespace mpmcut {
 
@@ -27,11 +33,20 @@ constexpr const char* kChipFile = "data/experiments/ti64_chip_morphology.csv";
 constexpr const char* kForcesSource =
     "Klippel et al., Int. J. Adv. Manuf. Technol. 135 (2024) 2871-2908, per-test data file [V]";
 
-// Rows of a data/experiments CSV as maps (the chip-type file: text columns).
-std::vector<std::map<std::string, std::string>> read_data_csv(std::string_view text, const std::string& source) {
-  std::vector<std::map<std::string, std::string>> rows;
-  for (const DataFile::Row& r : read_data_file(text, source).rows) rows.push_back(r.cells);
-  return rows;
+// Goals of the validation (issue 11): what the model should reach on the measured matrix without a
+// parameter tuned per condition.
+constexpr double kGoalRatioError = 0.15;      // Ft/Fc within +-15 % at every condition
+constexpr double kGoalThicknessError = 0.10;  // Fc(h)/Fc(0.1 mm) within +-10 %
+constexpr double kGoalMeanFcError = 0.15;     // mean |dFc| / Fc < 15 % (b = 1 mm assumed)
+constexpr double kReferenceH_mm = 0.1;        // the thickness of the Fc(h) ratios
+
+// --quick without a selection: a trend at one h (0.04 mm at 100 and 400.1 m/min), a thickness ratio
+// (0.04 / 0.1 mm at 100 m/min) and the chip-type conditions: every part of the report, in seconds.
+const std::vector<std::string>& quick_condition_ids() {
+  static const std::vector<std::string> ids{"forces_h0.04mm_vc100mpmin", "forces_h0.04mm_vc400.1mpmin",
+                                            "forces_h0.1mm_vc100mpmin", "chip_sutter_list_2013_low_v5mps",
+                                            "chip_sutter_list_2013_high_v75mps"};
+  return ids;
 }
 
 double num(const std::map<std::string, std::string>& row, const std::string& key) {
@@ -39,34 +54,67 @@ double num(const std::map<std::string, std::string>& row, const std::string& key
   return it == row.end() || it->second.empty() ? NAN : std::strtod(it->second.c_str(), nullptr);
 }
 
-struct Measured {
-  double h_mm, vc_m_per_min, fc, fc_min, fc_max, ff, ff_min, ff_max, edge_radius_um;
-  int n;
-  std::string status;
-};
-
-// One simulated condition: what the run is for and which measurement it is compared with.
+// One condition of the matrix: what the run is for, which measurement it is compared with, and its result.
 struct Condition : CuttingCondition {
-  const Measured* measured = nullptr;
+  std::optional<MeasuredForces> measured;   // force conditions
   std::map<std::string, std::string> chip;  // the ti64_chip_morphology.csv row for chip conditions
+  std::string case_text;
+  bool selected = false;                    // run by this invocation
+  std::string origin;                       // "this run" | "earlier run" (complete, same scene) | "" (not reported)
   CaseResult result;
+
+  bool complete() const { return !origin.empty() && result.status == "complete"; }
+  double speed_m_per_min() const { return speed_m_per_s * 60.0; }
+  std::optional<double> fc() const { return result.cutting_force_N_per_mm; }
+  std::optional<double> ft() const { return result.thrust_force_N_per_mm; }
+  std::optional<double> ratio() const {
+    return fc() && ft() && *fc() != 0.0 ? std::optional<double>(*ft() / *fc()) : std::nullopt;
+  }
+  // Simulated chip thickness t_c = t0 / r, um.
+  std::optional<double> chip_thickness_um() const {
+    const auto& r = result.chip_thickness_ratio;
+    return r && *r > 0.0 ? std::optional<double>(h_mm * 1e3 / *r) : std::nullopt;
+  }
+  // A complete force condition with both forces: the ones the errors and goals are computed over.
+  bool compared() const { return kind == "forces" && complete() && fc() && ft(); }
 };
 
-ConditionRunSettings run_settings(bool quick, int cells_per_feed) {
+struct ValidateOptions {
+  bool quick = false;
+  int cells_per_feed = 10;            // N: cell <= t0 / N (the cutting preset's t0/10)
+  double cells_per_edge_radius = 4.0; // M: cell <= r_n / M
+  std::string out_dir;
+  int jobs = 0;
+  int threads = 1;
+  bool no_plots = false;
+  bool list = false;
+  std::vector<double> h_mm, speeds_m_per_min;
+  std::vector<std::string> condition_ids;
+};
+
+ConditionRunSettings run_settings(const ValidateOptions& o) {
   ConditionRunSettings s;
-  s.quick = quick;
-  s.cells_per_feed = cells_per_feed;
+  s.quick = o.quick;
+  s.cells_per_feed = o.cells_per_feed;
+  s.cells_per_edge_radius = o.cells_per_edge_radius;
   return s;
 }
 
-std::string percent_error(std::optional<double> sim, double measured) {
-  if (!sim || !std::isfinite(measured) || measured == 0.0) return "";
-  return fmt::format("{:+.0f}", 100.0 * (*sim - measured) / measured);
+std::string pct(std::optional<double> relative) {
+  return relative ? fmt::format("{:+.1f}", 100.0 * *relative) : std::string();
 }
 
 std::string within(std::optional<double> sim, double lo, double hi) {
   if (!sim) return "";
   return (*sim >= lo && *sim <= hi) ? "yes" : (*sim < lo ? "below" : "above");
+}
+
+std::string g4(double x) { return std::isfinite(x) ? fmt::format("{:.4g}", x) : std::string(); }
+
+std::string join(const std::vector<std::string>& parts, const std::string& sep) {
+  std::string out;
+  for (const auto& p : parts) out += (out.empty() ? "" : sep) + p;
+  return out;
 }
 
 std::optional<double> melting_temperature(const fs::path& dir) {
@@ -78,53 +126,22 @@ std::optional<double> melting_temperature(const fs::path& dir) {
   return std::nullopt;
 }
 
-struct ValidateOptions {
-  bool quick = false;
-  int cells_per_feed = 10;  // cell = t0 / cells_per_feed (the cutting preset's t0/10)
-  std::string out_dir;
-  int jobs = 0;
-  int threads = 1;
-  bool no_plots = false;
-};
-
-int run_validation(const ValidateOptions& o) {
-  const fs::path out = o.out_dir.empty() ? fs::path(o.quick ? "results/validation_quick" : "results/validation")
-                                         : fs::path(o.out_dir);
-  fs::create_directories(out / "cases");
-  fs::create_directories(out / "logs");
-
-  std::vector<Measured> measured;
-  for (const auto& r : read_data_csv(embedded_tool_file(kForcesFile), kForcesFile))
-    measured.push_back({num(r, "h_mm"), num(r, "vc_m_per_min"), num(r, "Fc_mean_N"), num(r, "Fc_min_N"),
-                        num(r, "Fc_max_N"), num(r, "Ff_mean_N"), num(r, "Ff_min_N"), num(r, "Ff_max_N"),
-                        num(r, "edge_radius_um"), static_cast<int>(num(r, "n_tests")), r.at("status")});
-  const auto find_measured = [&](double h_mm, double vc) -> const Measured* {
-    for (const Measured& m : measured)
-      if (std::abs(m.h_mm - h_mm) < 1e-9 && std::abs(m.vc_m_per_min - vc) < 1e-6) return &m;
-    return nullptr;
-  };
-
-  // The force conditions: h = 0.1 mm across the speeds (Fc, Ft, Ft/Fc, Fc(v)/Fc(100 m/min)); the full
-  // validation adds the h-sweep at 100 m/min (Fc(h)/Fc(0.1 mm)). Rows with status "ok" and three tests.
-  std::vector<std::pair<double, double>> force_points =
-      o.quick ? std::vector<std::pair<double, double>>{{0.1, 150.0}, {0.1, 381.3}}
-              : std::vector<std::pair<double, double>>{{0.1, 50.1}, {0.1, 100.0}, {0.1, 199.9}, {0.1, 381.3},
-                                                       {0.04, 100.0}, {0.2, 100.0}};
+// Every condition of data/experiments: all rows of the force file (every status) and the chip-type rows
+// that name a speed to simulate.
+std::vector<Condition> matrix_conditions(const ConditionRunSettings& settings) {
   std::vector<Condition> conditions;
-  for (const auto& [h, vc] : force_points) {
-    const Measured* m = find_measured(h, vc);
-    if (!m) throw std::runtime_error(fmt::format("no row h = {} mm, vc = {} m/min in {}", h, vc, kForcesFile));
+  for (const MeasuredForces& m : read_measured_forces(read_data_file(embedded_tool_file(kForcesFile), kForcesFile))) {
     Condition c;
-    c.id = fmt::format("forces_h{:g}mm_vc{:g}mpmin", h, vc);
+    c.id = fmt::format("forces_h{:g}mm_vc{:g}mpmin", m.h_mm, m.vc_m_per_min);
     c.kind = "forces";
-    c.speed_m_per_s = vc / 60.0;
-    c.h_mm = h;
-    c.edge_radius_um = m->edge_radius_um;
+    c.speed_m_per_s = m.vc_m_per_min / 60.0;
+    c.h_mm = m.h_mm;
+    c.edge_radius_um = m.edge_radius_um;
     c.measured = m;
     conditions.push_back(c);
   }
-  const auto chip_rows = read_data_csv(embedded_tool_file(kChipFile), kChipFile);
-  for (const auto& r : chip_rows) {
+  for (const DataFile::Row& row : read_data_file(embedded_tool_file(kChipFile), kChipFile).rows) {
+    const auto& r = row.cells;
     const double v = num(r, "simulate_speed_m_per_s");
     if (!std::isfinite(v)) continue;
     Condition c;
@@ -136,111 +153,347 @@ int run_validation(const ValidateOptions& o) {
     c.chip = r;
     conditions.push_back(c);
   }
+  for (Condition& c : conditions) c.case_text = condition_case_text(c, settings);
+  return conditions;
+}
 
-  std::vector<ChildRun> runs;
+bool same_h(double a, double b) { return std::abs(a - b) <= 1e-9; }
+bool same_speed(double a, double b) { return std::abs(a - b) <= 1e-6 * std::max(1.0, std::abs(b)); }
+
+// Marks the conditions this invocation runs. Filters given together must all match (--h 0.1 --speeds-m-per-min
+// 100 is one condition); a filter value that matches nothing in the matrix is an error, so that a typing error
+// does not silently run less.
+void select_conditions(std::vector<Condition>& all, const ValidateOptions& o) {
+  const bool filtered = !o.h_mm.empty() || !o.speeds_m_per_min.empty() || !o.condition_ids.empty();
+  const auto available = [&](auto value_of) {
+    std::set<std::string> seen;
+    std::vector<std::string> list;
+    for (const Condition& c : all)
+      if (seen.insert(value_of(c)).second) list.push_back(value_of(c));
+    return join(list, ", ");
+  };
+  for (double h : o.h_mm)
+    if (std::none_of(all.begin(), all.end(), [&](const Condition& c) { return same_h(c.h_mm, h); }))
+      throw InputError(fmt::format("--h {:g}: no condition of the matrix has h = {:g} mm (it has h = {} mm)", h, h,
+                                   available([](const Condition& c) { return fmt::format("{:g}", c.h_mm); })));
+  for (double v : o.speeds_m_per_min)
+    if (std::none_of(all.begin(), all.end(), [&](const Condition& c) { return same_speed(c.speed_m_per_min(), v); }))
+      throw InputError(fmt::format("--speeds-m-per-min {:g}: no condition of the matrix has vc = {:g} m/min (it has {} "
+                                   "m/min)",
+                                   v, v, available([](const Condition& c) { return fmt::format("{:g}", c.speed_m_per_min()); })));
+  for (const std::string& id : o.condition_ids)
+    if (std::none_of(all.begin(), all.end(), [&](const Condition& c) { return c.id == id; }))
+      throw InputError(fmt::format("--conditions {}: no such condition (`mpmcut validate --list` names them)", id));
+  for (Condition& c : all) {
+    if (!filtered) {
+      const auto& quick = quick_condition_ids();
+      c.selected = !o.quick || std::find(quick.begin(), quick.end(), c.id) != quick.end();
+      continue;
+    }
+    c.selected =
+        (o.h_mm.empty() || std::any_of(o.h_mm.begin(), o.h_mm.end(), [&](double h) { return same_h(c.h_mm, h); })) &&
+        (o.speeds_m_per_min.empty() || std::any_of(o.speeds_m_per_min.begin(), o.speeds_m_per_min.end(),
+                                                   [&](double v) { return same_speed(c.speed_m_per_min(), v); })) &&
+        (o.condition_ids.empty() || std::find(o.condition_ids.begin(), o.condition_ids.end(), c.id) != o.condition_ids.end());
+  }
+  if (std::none_of(all.begin(), all.end(), [](const Condition& c) { return c.selected; }))
+    throw InputError("the selection (--h, --speeds-m-per-min, --conditions together) matches no condition of the matrix");
+}
+
+Scene condition_scene(const Condition& c, const fs::path& case_file) { return parse_scene(c.case_text, case_file.string()); }
+
+std::string resolution_text(const ValidateOptions& o) {
+  if (o.quick) return "--quick: cell = t0/4, 1 particle per cell, 4 cells of tool travel (a pipeline check)";
+  return fmt::format(
+      "cell = min(t0/N, r_n/M) with N = {} cells across the uncut chip thickness t0 (--cells-per-feed) and M = {:g} "
+      "cells across the measured edge radius r_n (--cells-per-edge-radius; force conditions), 2×2 particles per "
+      "cell; chip-type conditions at t0/{} (the least the chip analysis needs to resolve segments; their 5 µm edge is "
+      "the preset's, not measured, and sets no limit). Tool travel 6·max(t0, r_n) (the steady window, after "
+      "max(40 % of the cut, 3 t0), is then at least 3 t0 long); workpiece height t0 + max(3 t0, 2 r_n)",
+      o.cells_per_feed, o.cells_per_edge_radius, chip_cells_per_feed(o.cells_per_feed));
+}
+
+// --list: the selected conditions with their resolution and estimated cost; writes their case files.
+int list_conditions(const std::vector<Condition>& conditions, const fs::path& out, const ValidateOptions& o) {
+  fs::create_directories(out / "cases");
+  std::cout << fmt::format("Resolution: {}.\n", resolution_text(o));
+  std::cout << fmt::format("{:<36} {:>6} {:>6} {:>8} {:>6} {:>10} {:>7} {:>7} {:>7} {:>6} {:>9} {:>10} {:>9} {:>9}  {}\n",
+                           "condition", "kind", "h_mm", "vc_m/min", "r_n_um", "status", "cell_um", "cut_mm", "cells/t0",
+                           "f_mass", "particles", "steps", "Gpart·st", "core_h", "in OUT");
+  double total_particle_steps = 0, total_to_run = 0;
+  int n = 0, complete = 0;
   for (const Condition& c : conditions) {
+    if (!c.selected) continue;
     const fs::path case_file = out / "cases" / (c.id + ".toml");
-    write_file_atomically(case_file, [&](std::ostream& s) { s << condition_case_text(c, run_settings(o.quick, o.cells_per_feed)); });
+    write_file_atomically(case_file, [&](std::ostream& s) { s << c.case_text; });
+    const Scene scene = condition_scene(c, case_file);
+    const RunCost cost = estimate_run_cost(scene);
+    const ExistingRun existing = existing_run(out / c.id, scene);
+    const char* state = existing == ExistingRun::Complete ? "complete" : existing == ExistingRun::Resumable ? "resumable" : "-";
+    const double ps = cost.particle_steps();
+    total_particle_steps += ps;
+    if (existing != ExistingRun::Complete) total_to_run += ps;
+    complete += existing == ExistingRun::Complete;
+    ++n;
+    const auto& cut = *scene.cutting;
+    std::cout << fmt::format("{:<36} {:>6} {:>6g} {:>8g} {:>6g} {:>10} {:>7.3g} {:>7.3g} {:>7.3g} {:>6.3g} {:>9} {:>10.3g} "
+                             "{:>9.3g} {:>9.3g}  {}\n",
+                             c.id, c.kind, c.h_mm, c.speed_m_per_min(), c.edge_radius_um,
+                             c.measured ? c.measured->status : std::string("-"), cut.cell_size * 1e6, cut.cut_length * 1e3,
+                             cut.uncut_chip_thickness / cut.cell_size, cost.mass_scaling_factor, cost.particles, cost.steps,
+                             ps * 1e-9, ps * kCoreSecondsPerParticleStep / 3600.0, state);
+  }
+  std::cout << fmt::format(
+      "{} conditions, {} already complete in {}; {:.3g} G particle-steps, about {:.3g} core-hours in all, {:.3g} "
+      "core-hours still to run (estimate: {:.2g} core-s per particle-step, steps at the first step's stable time step; "
+      "case files in {})\n",
+      n, complete, out.string(), total_particle_steps * 1e-9, total_particle_steps * kCoreSecondsPerParticleStep / 3600.0,
+      total_to_run * kCoreSecondsPerParticleStep / 3600.0, kCoreSecondsPerParticleStep, (out / "cases").string());
+  return 0;
+}
+
+std::string condition_label(const Condition& c) {
+  const MeasuredForces& m = *c.measured;
+  return fmt::format("h = {:g} mm, vc = {:g} m/min ({:.3g} m/s), r_n = {:g} µm, n = {}{}", m.h_mm, m.vc_m_per_min,
+                     c.speed_m_per_s, m.edge_radius_um, m.n_tests, m.status == "ok" ? "" : ", status " + m.status);
+}
+
+
+int run_validation(const ValidateOptions& o) {
+  const fs::path out = o.out_dir.empty() ? fs::path(o.quick ? "results/validation_quick" : "results/validation")
+                                         : fs::path(o.out_dir);
+  std::vector<Condition> conditions = matrix_conditions(run_settings(o));
+  select_conditions(conditions, o);
+  if (o.list) return list_conditions(conditions, out, o);
+  fs::create_directories(out / "cases");
+  fs::create_directories(out / "logs");
+
+  // The runs of this invocation; each child keeps a complete run of the same scene (--keep-complete), so a
+  // rerun over a superset runs only what is new.
+  std::vector<ChildRun> runs;
+  std::vector<Condition*> run_of;
+  for (Condition& c : conditions) {
+    if (!c.selected) continue;
+    const fs::path case_file = out / "cases" / (c.id + ".toml");
+    write_file_atomically(case_file, [&](std::ostream& s) { s << c.case_text; });
     ChildRun r;
     r.name = c.id;
     r.args = {"run", case_file.string(), "--out", (out / c.id).string(), "--keep-complete", "--no-progress", "--threads",
               std::to_string(o.threads)};
+    // A quick run's pictures take longer than the run and show an unconverged chip.
+    if (o.quick) r.args.push_back("--no-plots");
     r.log_file = out / "logs" / (c.id + ".log");
     runs.push_back(r);
+    run_of.push_back(&c);
   }
   const int jobs = o.jobs > 0 ? o.jobs : std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / o.threads);
-  std::cout << fmt::format("mpmcut validate{}: {} runs, {}, each with --threads {}; results in {}\n",
+  std::cout << fmt::format("mpmcut validate{}: {} of the {} conditions of the matrix, {}, each with --threads {}; "
+                           "results in {}\n",
                            o.quick ? " --quick (coarse: 4 cells/t0, 1 particle per cell, 4 cells of travel; checks "
                                      "the pipeline, the numbers are not converged)"
                                    : "",
-                           runs.size(), concurrency_text(jobs), o.threads, out.string())
+                           runs.size(), conditions.size(), concurrency_text(jobs), o.threads, out.string())
             << std::flush;
   const bool completed = run_cases(runs, jobs, true);
-  int failed = 0;
-  for (std::size_t i = 0; i < conditions.size(); ++i) {
-    conditions[i].result = read_case_result(out / conditions[i].id, runs[i].log_file, runs[i].exit_code);
-    if (conditions[i].result.status != "complete") ++failed;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    run_of[i]->result = read_case_result(out / run_of[i]->id, runs[i].log_file, runs[i].exit_code);
+    run_of[i]->origin = "this run";
+  }
+  // Conditions not selected now but complete in `out` from an earlier part with the same scene (the same
+  // resolution rule and settings) are reported too, so that a matrix run in parts ends in one report.
+  for (Condition& c : conditions) {
+    if (c.selected) continue;
+    try {
+      if (existing_run(out / c.id, condition_scene(c, out / "cases" / (c.id + ".toml"))) != ExistingRun::Complete) continue;
+    } catch (const std::exception&) {
+      continue;
+    }
+    c.result = read_case_result(out / c.id, out / "logs" / (c.id + ".log"), 0);
+    c.origin = "earlier run";
+  }
+  int reported = 0, complete = 0, failed = 0;
+  for (const Condition& c : conditions) {
+    reported += !c.origin.empty();
+    complete += c.complete();
+    failed += c.selected && !c.complete();
   }
 
   // Per-run results, for the plots and for anyone who wants the numbers.
   TextTable runs_table;
-  runs_table.columns = {"condition", "kind", "speed_m_per_s", "speed_m_per_min", "h_mm", "edge_radius_um", "status",
-                        "cutting_force_N_per_mm", "thrust_force_N_per_mm", "force_window", "max_temperature_K",
-                        "chip_classification", "result_dir", "message"};
-  for (const Condition& c : conditions)
-    runs_table.rows.push_back({c.id, c.kind, fmt::format("{:g}", c.speed_m_per_s), fmt::format("{:g}", c.speed_m_per_s * 60),
-                               fmt::format("{:g}", c.h_mm), fmt::format("{:g}", c.edge_radius_um), c.result.status,
-                               format_number(c.result.cutting_force_N_per_mm), format_number(c.result.thrust_force_N_per_mm),
-                               c.result.force_basis, format_number(c.result.max_temperature_K),
-                               c.result.chip_classification, (out / c.id).string(), c.result.message});
+  runs_table.columns = {"condition", "kind", "speed_m_per_s", "speed_m_per_min", "h_mm", "edge_radius_um",
+                        "measured_status", "origin", "status", "cutting_force_N_per_mm", "thrust_force_N_per_mm",
+                        "force_window", "chip_thickness_ratio", "chip_thickness_um", "cell_size_um", "mass_scaling_factor",
+                        "max_temperature_K", "chip_classification", "wall_time_s", "result_dir", "message"};
+  for (const Condition& c : conditions) {
+    if (c.origin.empty()) continue;
+    runs_table.rows.push_back({c.id, c.kind, fmt::format("{:g}", c.speed_m_per_s), fmt::format("{:g}", c.speed_m_per_min()),
+                               fmt::format("{:g}", c.h_mm), fmt::format("{:g}", c.edge_radius_um),
+                               c.measured ? c.measured->status : "", c.origin, c.result.status,
+                               format_number(c.fc()), format_number(c.ft()), c.result.force_basis,
+                               format_number(c.result.chip_thickness_ratio), format_number(c.chip_thickness_um()),
+                               format_number(c.result.cell_size_um), format_number(c.result.mass_scaling_factor),
+                               format_number(c.result.max_temperature_K), c.result.chip_classification,
+                               format_number(c.result.wall_time_s), (out / c.id).string(), c.result.message});
+  }
   runs_table.write_csv(out / "validation_runs.csv");
 
-  // The comparison table: one row per compared quantity.
+  // The comparison table: one row per compared quantity of every reported force condition.
   TextTable table;
   table.columns = {"condition", "quantity", "unit", "measured_mean", "measured_min", "measured_max", "simulated",
                    "error_percent", "in_measured_range", "basis", "source"};
   table.headings = {"condition", "quantity", "unit", "measured (mean)", "measured min", "measured max", "simulated",
                     "error %", "in range", "basis / assumption", "source"};
-  const auto g = [](double x) { return std::isfinite(x) ? fmt::format("{:.4g}", x) : std::string(); };
-  // Trends: Fc(v)/Fc(v_min) at h = 0.1 mm (base: the slowest simulated speed), Fc(h)/Fc(0.1 mm) at the same speed.
-  const auto base_of = [&](const Condition& c) -> const Condition* {
-    const Condition* best = nullptr;
-    for (const Condition& b : conditions) {
-      if (b.kind != "forces" || b.h_mm != 0.1) continue;
-      if (c.h_mm != 0.1 ? b.measured->vc_m_per_min == c.measured->vc_m_per_min
-                        : (!best || b.speed_m_per_s < best->speed_m_per_s))
-        best = &b;
-    }
-    return best;
+  const auto reference_of = [&](const Condition& c) -> const Condition* {
+    for (const Condition& b : conditions)
+      if (b.kind == "forces" && same_h(b.h_mm, kReferenceH_mm) && same_speed(b.speed_m_per_s, c.speed_m_per_s)) return &b;
+    return nullptr;
   };
+  // Errors over the compared conditions (complete force runs), in matrix order.
+  std::vector<const Condition*> compared;
+  std::vector<std::optional<double>> err_fc, err_ft, err_ratio, err_tc;
+  struct ThicknessRatio {
+    const Condition* c;
+    double measured, simulated;
+  };
+  std::vector<ThicknessRatio> thickness_ratios;
   for (const Condition& c : conditions) {
-    if (c.kind != "forces") continue;
-    const Measured& m = *c.measured;
-    const std::string cond = fmt::format("h = {:g} mm, vc = {:g} m/min ({:.3g} m/s), r_n = {:g} µm, n = {}{}", m.h_mm,
-                                         m.vc_m_per_min, c.speed_m_per_s, m.edge_radius_um, m.n,
-                                         m.status == "ok" ? "" : ", status " + m.status);
-    const auto fc = c.result.cutting_force_N_per_mm, ft = c.result.thrust_force_N_per_mm;
+    if (c.kind != "forces" || c.origin.empty()) continue;
+    const MeasuredForces& m = *c.measured;
+    const std::string cond = condition_label(c);
+    const bool ok = c.compared();
+    const auto fc = ok ? c.fc() : std::nullopt, ft = ok ? c.ft() : std::nullopt, ratio = ok ? c.ratio() : std::nullopt;
+    const auto tc = ok ? c.chip_thickness_um() : std::nullopt;
+    const double measured_tc = m.chip_thickness_um.value_or(NAN);
     const std::string b_assumed = "N/mm vs N with b = 1 mm ASSUMED (b not in the data file)";
-    table.rows.push_back({cond, "Fc", "N/mm", g(m.fc), g(m.fc_min), g(m.fc_max), format_number(fc),
-                          percent_error(fc, m.fc), within(fc, m.fc_min, m.fc_max), b_assumed, kForcesSource});
-    table.rows.push_back({cond, "Ft", "N/mm", g(m.ff), g(m.ff_min), g(m.ff_max), format_number(ft),
-                          percent_error(ft, m.ff), within(ft, m.ff_min, m.ff_max), b_assumed, kForcesSource});
-    std::optional<double> ratio = fc && ft && *fc != 0 ? std::optional<double>(*ft / *fc) : std::nullopt;
-    const double r_lo = m.ff_min / m.fc_max, r_hi = m.ff_max / m.fc_min;
-    table.rows.push_back({cond, "Ft/Fc", "-", g(m.ff / m.fc), g(r_lo), g(r_hi), format_number(ratio, 3),
-                          percent_error(ratio, m.ff / m.fc), within(ratio, r_lo, r_hi),
+    table.rows.push_back({cond, "Fc", "N/mm", g4(m.fc_N), g4(m.fc_min_N), g4(m.fc_max_N), format_number(fc),
+                          pct(relative_error(fc, m.fc_N)), within(fc, m.fc_min_N, m.fc_max_N), b_assumed, kForcesSource});
+    table.rows.push_back({cond, "Ft", "N/mm", g4(m.ff_N), g4(m.ff_min_N), g4(m.ff_max_N), format_number(ft),
+                          pct(relative_error(ft, m.ff_N)), within(ft, m.ff_min_N, m.ff_max_N), b_assumed, kForcesSource});
+    const double r_lo = m.ff_min_N / m.fc_max_N, r_hi = m.ff_max_N / m.fc_min_N;
+    table.rows.push_back({cond, "Ft/Fc", "-", g4(m.ff_N / m.fc_N), g4(r_lo), g4(r_hi), format_number(ratio, 3),
+                          pct(relative_error(ratio, m.ff_N / m.fc_N)), within(ratio, r_lo, r_hi),
                           "independent of b (range: extreme combinations of the test ranges)", kForcesSource});
-    const Condition* reference = base_of(c);
-    if (reference && &c != reference && reference->result.cutting_force_N_per_mm && fc) {
-      const Measured& mr = *reference->measured;
-      const bool speed_trend = c.h_mm == reference->h_mm;
-      const std::optional<double> sim = *fc / *reference->result.cutting_force_N_per_mm;
-      table.rows.push_back({cond, speed_trend ? fmt::format("Fc / Fc({:g} m/min)", mr.vc_m_per_min) : "Fc / Fc(h = 0.1 mm)",
-                            "-", g(m.fc / mr.fc),
-                            g(m.fc_min / mr.fc_max), g(m.fc_max / mr.fc_min), format_number(sim, 3),
-                            percent_error(sim, m.fc / mr.fc), within(sim, m.fc_min / mr.fc_max, m.fc_max / mr.fc_min),
-                            "independent of b", kForcesSource});
+    table.rows.push_back({cond, "t_c", "µm", g4(measured_tc), "", "", format_number(tc, 3),
+                          pct(relative_error(tc, measured_tc)), "",
+                          "simulated t0 / chip thickness ratio (chip analysis) vs measured h_avg", kForcesSource});
+    if (const Condition* ref = reference_of(c); ref && ref != &c && ref->compared() && ok) {
+      const MeasuredForces& mr = *ref->measured;
+      const double meas = m.fc_N / mr.fc_N, sim = *fc / *ref->fc();
+      table.rows.push_back({cond, "Fc / Fc(h = 0.1 mm)", "-", g4(meas), g4(m.fc_min_N / mr.fc_max_N),
+                            g4(m.fc_max_N / mr.fc_min_N), format_number(sim, 3), pct(relative_error(sim, meas)),
+                            within(sim, m.fc_min_N / mr.fc_max_N, m.fc_max_N / mr.fc_min_N),
+                            fmt::format("independent of b; same speed, h = 0.1 mm run with r_n = {:g} µm", mr.edge_radius_um),
+                            kForcesSource});
+      thickness_ratios.push_back({&c, meas, sim});
     }
+    if (!ok) continue;
+    compared.push_back(&c);
+    err_fc.push_back(relative_error(fc, m.fc_N));
+    err_ft.push_back(relative_error(ft, m.ff_N));
+    err_ratio.push_back(relative_error(ratio, m.ff_N / m.fc_N));
+    err_tc.push_back(relative_error(tc, measured_tc));
   }
   for (const Condition& c : conditions) {
-    if (c.kind != "chip") continue;
+    if (c.kind != "chip" || c.origin.empty()) continue;
     const std::string sim = c.result.status != "complete" ? c.result.status
                             : c.result.chip_classification.empty() ? "n/a (no chip analysis in summary.json)"
                                                                    : c.result.chip_classification;
     table.rows.push_back({fmt::format("h = 0.1 mm, V = {:g} m/s ({:g} m/min), rake 0° (assumed)", c.speed_m_per_s,
-                                      c.speed_m_per_s * 60),
+                                      c.speed_m_per_min()),
                           "chip type", "-", c.chip.at("chip_type"), "", "", sim, "", "",
                           c.chip.at("statement") + " (" + c.chip.at("note") + ")",
                           c.chip.at("source") + " [" + c.chip.at("tag") + "]"});
   }
   table.write_csv(out / "validation.csv");
 
+  // Mean and worst absolute errors.
+  TextTable errors;
+  errors.columns = {"quantity", "unit", "conditions", "mean_abs_error_percent", "worst_abs_error_percent", "worst_condition"};
+  errors.headings = {"quantity", "unit", "conditions with a value", "mean abs. error %", "worst abs. error %", "worst at"};
+  const auto error_row = [&](const std::string& q, const std::string& unit, const std::vector<std::optional<double>>& e) {
+    const ErrorSummary s = summarize_errors(e);
+    errors.rows.push_back({q, unit, std::to_string(s.count), s.count ? fmt::format("{:.1f}", 100 * s.mean_abs) : "",
+                           s.count ? fmt::format("{:.1f}", 100 * s.worst_abs) : "",
+                           s.count ? compared[s.worst_index]->id : ""});
+    return s;
+  };
+  const ErrorSummary s_fc = error_row("Fc", "N/mm (b = 1 mm assumed)", err_fc);
+  error_row("Ft", "N/mm (b = 1 mm assumed)", err_ft);
+  const ErrorSummary s_ratio = error_row("Ft/Fc", "-", err_ratio);
+  error_row("t_c", "µm", err_tc);
+  std::vector<std::optional<double>> err_thickness;
+  for (const auto& t : thickness_ratios) err_thickness.push_back(relative_error(t.simulated, t.measured));
+  const ErrorSummary s_thick = summarize_errors(err_thickness);
+  errors.rows.push_back({"Fc / Fc(h = 0.1 mm)", "-", std::to_string(s_thick.count),
+                         s_thick.count ? fmt::format("{:.1f}", 100 * s_thick.mean_abs) : "",
+                         s_thick.count ? fmt::format("{:.1f}", 100 * s_thick.worst_abs) : "",
+                         s_thick.count ? thickness_ratios[s_thick.worst_index].c->id : ""});
+  errors.write_csv(out / "validation_errors.csv");
+
+  // Speed trends: the least-squares slope of Fc over ln v at each h with two or more compared speeds; the
+  // measured slope over the same speeds, so that the two see the same conditions.
+  TextTable trends;
+  trends.columns = {"h_mm", "speeds_m_per_min", "measured_slope_N_per_mm", "simulated_slope_N_per_mm", "sign_right"};
+  trends.headings = {"h (mm)", "speeds (m/min)", "measured dFc/d ln v (N/mm, b = 1 mm)", "simulated dFc/d ln v (N/mm)",
+                     "sign right"};
+  int trends_total = 0, trends_right = 0;
+  std::vector<double> hs;
+  for (const Condition* c : compared)
+    if (std::none_of(hs.begin(), hs.end(), [&](double h) { return same_h(h, c->h_mm); })) hs.push_back(c->h_mm);
+  std::sort(hs.begin(), hs.end());
+  for (double h : hs) {
+    std::vector<double> v, fm, fs;
+    std::vector<std::string> vs;
+    for (const Condition* c : compared)
+      if (same_h(c->h_mm, h)) {
+        v.push_back(c->speed_m_per_min());
+        fm.push_back(c->measured->fc_N);
+        fs.push_back(*c->fc());
+        vs.push_back(fmt::format("{:g}", c->speed_m_per_min()));
+      }
+    const auto sm = speed_trend_slope(v, fm), ss = speed_trend_slope(v, fs);
+    if (!sm || !ss) continue;
+    const bool right = (*sm > 0) == (*ss > 0);
+    ++trends_total;
+    trends_right += right;
+    trends.rows.push_back({fmt::format("{:g}", h), join(vs, " "), fmt::format("{:.3g}", *sm), fmt::format("{:.3g}", *ss),
+                           right ? "yes" : "no"});
+  }
+  trends.write_csv(out / "validation_trends.csv");
+
+  // The goals.
+  TextTable goals;
+  goals.columns = {"goal", "value", "conditions", "met"};
+  goals.headings = {"goal", "value", "conditions", "met?"};
+  const auto met = [](int n, bool ok) { return n == 0 ? std::string("n/a (no compared condition)") : ok ? "yes" : "no"; };
+  goals.rows.push_back({"Ft/Fc within ±15 % at every condition",
+                        s_ratio.count ? fmt::format("worst {:.1f} %", 100 * s_ratio.worst_abs) : "",
+                        std::to_string(s_ratio.count), met(s_ratio.count, s_ratio.worst_abs <= kGoalRatioError)});
+  goals.rows.push_back({"Fc(h)/Fc(0.1 mm) within ±10 % at each speed with h = 0.1 mm",
+                        s_thick.count ? fmt::format("worst {:.1f} %", 100 * s_thick.worst_abs) : "",
+                        std::to_string(s_thick.count), met(s_thick.count, s_thick.worst_abs <= kGoalThicknessError)});
+  goals.rows.push_back({"sign of the speed trend of Fc (dFc/d ln v) right at each h with ≥ 2 speeds",
+                        trends_total ? fmt::format("{} of {} right", trends_right, trends_total) : "",
+                        std::to_string(trends_total), met(trends_total, trends_right == trends_total)});
+  goals.rows.push_back({"mean absolute error of Fc < 15 % (b = 1 mm assumed)",
+                        s_fc.count ? fmt::format("mean {:.1f} %", 100 * s_fc.mean_abs) : "", std::to_string(s_fc.count),
+                        met(s_fc.count, s_fc.mean_abs < kGoalMeanFcError)});
+  goals.write_csv(out / "validation_goals.csv");
+
   // The report.
   std::vector<std::string> hot;
   for (const Condition& c : conditions) {
+    if (c.origin.empty()) continue;
     const auto tm = melting_temperature(out / c.id);
     if (tm && c.result.max_temperature_K && *c.result.max_temperature_K > *tm)
       hot.push_back(fmt::format("{} ({:.0f} K)", c.id, *c.result.max_temperature_K));
+  }
+  std::vector<std::string> incomplete, not_run;
+  for (const Condition& c : conditions) {
+    if (c.origin.empty())
+      not_run.push_back("`" + c.id + "`");
+    else if (!c.complete())
+      incomplete.push_back(fmt::format("| `{}` | {} | {} |", c.id, c.result.status, c.result.message));
   }
   write_file_atomically(out / "validation.md", [&](std::ostream& s) {
     s << "# Validation against published Ti-6Al-4V orthogonal-cutting measurements\n\n";
@@ -248,15 +501,31 @@ int run_validation(const ValidateOptions& o) {
       s << "**--quick: coarse resolution (cell = t0/4, 1 particle per cell, 4 cells of tool travel). This checks "
            "that the pipeline runs; the simulated numbers are not converged and must not be read as a "
            "validation.**\n\n";
-    s << fmt::format("{} runs, {} complete, {} not complete{}.\n\n", conditions.size(), conditions.size() - failed,
-                     failed, completed ? "" : " (interrupted)");
-    if (!o.quick)
-      s << fmt::format("Resolution: cell = t0/{} ({} cells across the uncut chip), 2×2 particles per cell{}; chip-type "
-                       "conditions at t0/{} (at least the {} cells the chip analysis needs to resolve segments).\n\n",
-                       o.cells_per_feed, o.cells_per_feed,
-                       o.cells_per_feed < 10 ? " — coarser than the preset's t0/10: forces are indicative" : "",
-                       chip_cells_per_feed(o.cells_per_feed),
-                       ChipThresholds{}.resolved_cells_per_feed);
+    s << fmt::format("**{} of the {} conditions of the matrix are complete** ({} force conditions of {} and {} "
+                     "chip-type conditions); {} reported ({} run by this invocation{}, {} complete from an earlier run "
+                     "in this directory), {} not run yet{}. Errors and goals are over the {} complete force "
+                     "conditions.\n\n",
+                     complete, conditions.size(),
+                     std::count_if(conditions.begin(), conditions.end(), [](const Condition& c) { return c.kind == "forces" && c.complete(); }),
+                     std::count_if(conditions.begin(), conditions.end(), [](const Condition& c) { return c.kind == "forces"; }),
+                     std::count_if(conditions.begin(), conditions.end(), [](const Condition& c) { return c.kind == "chip"; }),
+                     reported, runs.size(), completed ? "" : ", interrupted",
+                     std::count_if(conditions.begin(), conditions.end(), [](const Condition& c) { return c.origin == "earlier run"; }),
+                     not_run.size(), not_run.empty() ? "" : " (listed at the end)", compared.size());
+    s << "Resolution: " << resolution_text(o) << ".\n\n";
+    s << "## Goals\n\n" << goals.markdown() << "\n";
+    s << "Under the stated assumption b = 1 mm; no parameter was tuned per condition (one material set, one friction "
+         "coefficient for the whole matrix).\n\n";
+    s << "## Errors over the complete force conditions\n\n" << errors.markdown() << "\n";
+    s << "Error = (simulated − measured mean) / measured mean, per condition; mean and worst of its absolute value over the conditions with "
+         "a value. t_c: simulated t0 / (chip thickness ratio of the chip analysis) against the measured mean chip "
+         "thickness h_avg (mostly one measurement per condition).\n\n";
+    s << "## Speed trends\n\n";
+    if (trends.rows.empty())
+      s << "No thickness has two or more complete speeds.\n\n";
+    else
+      s << trends.markdown() << "\nLeast-squares slope of Fc over ln(v) (N/mm per e-fold of speed) over the complete "
+                                "speeds at each h; the measured slope over the same speeds.\n\n";
     s << "## Assumptions\n\n"
          "- **Width of cut b = 1 mm (assumed).** The Klippel et al. data give forces in N for the whole width; b is "
          "in the paper's section 2, which was not read. Absolute Fc, Ft in N/mm are compared under this assumption; "
@@ -270,9 +539,17 @@ int run_validation(const ValidateOptions& o) {
          "cuts), the mean raw force over the last half of the cut (column force_window of validation_runs.csv).\n"
          "- The measured speeds (≤ 6.4 m/s) are below the ultra-high-speed range of the target paper; chip-type "
          "data at 5–75 m/s exist only as abstract statements without the transition speed.\n\n";
+
     s << "## Comparison\n\n" << table.markdown() << "\n";
     s << "Error % = (simulated − measured mean) / measured mean. \"in range\": the simulated value lies within the "
          "min–max of the repeated tests (for ratios: the extreme combinations of the ranges).\n\n";
+    if (!incomplete.empty())
+      s << "## Not complete\n\n| condition | status | message |\n|---|---|---|\n" << join(incomplete, "\n") << "\n\n";
+    if (!not_run.empty())
+      s << "## Not run yet\n\n" << not_run.size() << " conditions of the matrix have no complete run of this "
+        << "resolution in this directory: " << join(not_run, ", ")
+        << ". `mpmcut validate --out " << out.string() << "` with a selection (--h, --speeds-m-per-min, --conditions) "
+        << "runs them; complete ones are kept.\n\n";
     s << "## Where the data disagree or are thin\n\n"
          "- At h = 0.1 mm and nearly equal speeds the Klippel condition means differ by more than the scatter "
          "within a condition: 222.8 N at 10 m/min (r_n 40.8 µm) vs 209.2 N at 10.5 m/min (r_n 29.4 µm); tests marked "
@@ -290,18 +567,16 @@ int run_validation(const ValidateOptions& o) {
          "too long, and the tool differs).\n\n";
     if (!hot.empty())
       s << "## Physically odd\n\nMaximum particle temperature above the material's melting temperature in: "
-        << [&] {
-             std::string j;
-             for (const auto& h : hot) j += (j.empty() ? "" : ", ") + h;
-             return j;
-           }()
-        << ". Single particles at the tool–chip contact usually; see the chip pictures (mpmcut plot DIR).\n\n";
-    s << "## Files\n\nvalidation.csv (this table), validation_runs.csv (one row per run), validation_forces.png, "
-         "validation_ratio.png, cases/*.toml (the run inputs), <condition>/ (result directories), logs/.\n\n"
+        << join(hot, ", ") << ". Single particles at the tool–chip contact usually; see the chip pictures (mpmcut plot DIR).\n\n";
+    s << "## Files\n\nvalidation.csv (the comparison table), validation_goals.csv, validation_errors.csv, "
+         "validation_trends.csv, validation_runs.csv (one row per reported run), validation_parity.png, "
+         "validation_speed.png, validation_thickness.png, validation_forces.png, validation_ratio.png, cases/*.toml (the "
+         "run inputs), <condition>/ (result directories), logs/.\n\n"
          "Data: data/experiments/ti64_klippel2024_orthogonal_forces.csv and ti64_chip_morphology.csv (sources and "
          "caveats in their headers).\n";
   });
-  std::cout << "wrote " << (out / "validation.md").string() << ", validation.csv, validation_runs.csv\n";
+  std::cout << "wrote " << (out / "validation.md").string()
+            << ", validation.csv, validation_goals.csv, validation_errors.csv, validation_trends.csv, validation_runs.csv\n";
 
   if (!o.no_plots) {
     std::string why;
@@ -314,7 +589,7 @@ int run_validation(const ValidateOptions& o) {
   if (!completed) return 130;
   if (failed) {
     std::cerr << fmt::format("mpmcut validate: {} of {} runs did not complete (see validation.md and logs/)\n", failed,
-                             conditions.size());
+                             runs.size());
     return 1;
   }
   return 0;
@@ -325,13 +600,33 @@ int run_validation(const ValidateOptions& o) {
 void add_validate_command(CLI::App& app) {
   auto o = std::make_shared<ValidateOptions>();
   CLI::App* v = app.add_subcommand(
-      "validate", "Run the conditions of published Ti-6Al-4V cutting measurements (data/experiments) and compare: "
-                  "validation.md, validation.csv, plots");
-  v->add_flag("--quick", o->quick, "Coarse and short runs (seconds): checks the pipeline, numbers not converged");
+      "validate",
+      "Run the measured conditions of data/experiments (every speed and thickness of the Klippel et al. 2024 force "
+      "data with its measured edge radius, and the chip-type conditions) and compare: validation.md (goals, errors, "
+      "trends), CSV tables, parity and trend plots. Resumable: a rerun into the same --out keeps the complete "
+      "conditions, so the matrix can be run in parts (select with --h, --speeds-m-per-min, --conditions; --list "
+      "shows the conditions and their cost); the report covers every complete condition in --out");
+  v->add_flag("--quick", o->quick,
+              "Coarse and short runs (seconds) of 5 conditions (h 0.04 mm at 100 and 400.1 m/min, 0.1 mm at 100 m/min, "
+              "the two chip-type conditions) unless a selection is given: checks the pipeline, numbers not converged");
   v->add_option("--cells-per-feed", o->cells_per_feed,
-                "Cells across the uncut chip thickness: cell = t0/N (default 10; lower is coarser and faster, as "
-                "1/N^3); chip-type conditions use at least 8")
+                "N: cell <= t0/N, cells across the uncut chip thickness (default 10; cost grows as N^3); chip-type "
+                "conditions use at least 8")
       ->check(CLI::Range(2, 100));
+  v->add_option("--cells-per-edge-radius", o->cells_per_edge_radius,
+                "M: cell <= r_n/M, cells across the measured edge radius of the force conditions (default 4: the "
+                "edge's quarter arc then spans ~6 cells; 0 = no limit). cell = min(t0/N, r_n/M)")
+      ->check(CLI::Range(0.0, 100.0));
+  v->add_option("--h", o->h_mm, "Run only these uncut chip thicknesses, mm (comma-separated, e.g. 0.1,0.04)")
+      ->delimiter(',');
+  v->add_option("--speeds-m-per-min", o->speeds_m_per_min,
+                "Run only these cutting speeds, m/min (comma-separated, e.g. 100,400.1)")
+      ->delimiter(',');
+  v->add_option("--conditions", o->condition_ids, "Run only these conditions (ids as --list prints them, comma-separated)")
+      ->delimiter(',');
+  v->add_flag("--list", o->list,
+              "Print the selected conditions with cell size, cut length and estimated cost (particles x steps, "
+              "core-hours) and whether --out holds them complete; writes their case files, runs nothing");
   v->add_option("-o,--out", o->out_dir, "Output directory (default: results/validation or results/validation_quick)");
   v->add_option("-j,--jobs", o->jobs, "Runs at the same time (default: cores / threads)")->check(CLI::Range(1, 1024));
   v->add_option("-t,--threads", o->threads, "OpenMP threads of each run (default: 1)")->check(CLI::Range(1, 1024));

@@ -365,7 +365,8 @@ void Calibrator::write_results(const Evaluation& best, const std::vector<Conditi
       fmt::format("{} evaluations ({} global {}, then {}), seed {}", c_.evaluations, c_.global_evaluations,
                   c_.global_algorithm, c_.local_algorithm, c_.seed);
   const std::string resolution = c_.runs.quick ? "quick (cell = t0/4, 1 particle per cell, 4 cells of travel)"
-                                               : fmt::format("cell = t0/{}", c_.runs.cells_per_feed);
+                                               : fmt::format("cell = min(t0/{}, r_n/{:g})", c_.runs.cells_per_feed,
+                                                             c_.runs.cells_per_edge_radius);
 
   // The best set, ready to paste into a case file or materials/.
   const auto friction_index = [&]() -> std::optional<std::size_t> {

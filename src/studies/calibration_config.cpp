@@ -86,6 +86,9 @@ CalibrationConfig read_calibration_config(const fs::path& file, std::string_view
     c.runs.cells_per_feed = static_cast<int>(r->integer("cells_per_feed", c.runs.cells_per_feed));
     r->check("cells_per_feed", c.runs.cells_per_feed >= 2 && c.runs.cells_per_feed <= 100, "an integer from 2 to 100",
              c.runs.cells_per_feed);
+    c.runs.cells_per_edge_radius = r->number("cells_per_edge_radius", c.runs.cells_per_edge_radius);
+    r->check("cells_per_edge_radius", c.runs.cells_per_edge_radius >= 0.0 && c.runs.cells_per_edge_radius <= 100.0,
+             "a number from 0 (no limit) to 100", c.runs.cells_per_edge_radius);
     c.threads = static_cast<int>(r->integer("threads", 1));
     r->check("threads", c.threads >= 1 && c.threads <= 1024, "an integer from 1 to 1024", c.threads);
     c.runs.friction = r->number("friction", c.runs.friction);

@@ -105,13 +105,29 @@ int chip_cells_per_feed(int cells_per_feed) {
   return std::max(cells_per_feed, static_cast<int>(std::ceil(ChipThresholds{}.resolved_cells_per_feed)));
 }
 
+double validation_cell_size_m(double t0, double edge_radius, int cells_per_feed, double cells_per_edge_radius) {
+  const double by_feed = t0 / cells_per_feed;
+  return cells_per_edge_radius > 0.0 && edge_radius > 0.0 ? std::min(by_feed, edge_radius / cells_per_edge_radius)
+                                                          : by_feed;
+}
+
+double validation_cut_length_m(double t0, double edge_radius) { return 6.0 * std::max(t0, edge_radius); }
+
+double validation_workpiece_height_m(double t0, double edge_radius) {
+  return t0 + std::max(3.0 * t0, 2.0 * edge_radius);
+}
+
 std::string condition_case_text(const CuttingCondition& c, const ConditionRunSettings& o) {
   const double h = c.h_mm * 1e-3;
+  const double r_n = c.edge_radius_um * 1e-6;
   const int cells_per_feed = c.kind == "chip" ? chip_cells_per_feed(o.cells_per_feed) : o.cells_per_feed;
-  const double cell = o.quick ? 0.25 * h : h / cells_per_feed;
-  // quick: four cells of tool travel (pipeline check, numbers not meaningful); full: 0.4 mm, long enough
-  // for the preset's steady window (after >= 3 t0 of travel and 40 % of the cut).
-  const double cut = o.quick ? 4.0 * cell : std::max(0.4e-3, 6.0 * h);
+  // The edge-radius limit is for the measured edges of the force conditions; the chip-type conditions have
+  // the preset's 5 um edge (no radius in their source), which at r_n/M would be a 1 um cell at 75 m/s.
+  const double cells_per_edge_radius = c.kind == "forces" ? o.cells_per_edge_radius : 0.0;
+  const double cell = o.quick ? 0.25 * h : validation_cell_size_m(h, r_n, cells_per_feed, cells_per_edge_radius);
+  // quick: four cells of tool travel (pipeline check, numbers not meaningful).
+  const double cut = o.quick ? 4.0 * cell : validation_cut_length_m(h, r_n);
+  const double height = validation_workpiece_height_m(h, r_n);
   std::string s;
   s += fmt::format("title = \"{} {}: V = {:g} m/s ({:g} m/min), h = {:g} mm\"\n", o.purpose, c.id, c.speed_m_per_s,
                    c.speed_m_per_s * 60.0, c.h_mm);
@@ -131,13 +147,18 @@ std::string condition_case_text(const CuttingCondition& c, const ConditionRunSet
   s += fmt::format("cutting_speed = {}\n", c.speed_m_per_s);
   s += fmt::format("uncut_chip_thickness = {}\n", h);
   s += "width_of_cut = 1e-3  # ASSUMPTION b = 1 mm: the width of cut is not in the Klippel data file\n";
-  s += fmt::format("cut_length = {}\n", cut);
   s += "rake_angle_deg = 0.0       # ASSUMPTION: not in the data file\n";
   s += "clearance_angle_deg = 11.0 # ASSUMPTION: not in the data file\n";
   s += fmt::format("edge_radius = {}  # {}\n", c.edge_radius_um * 1e-6,
                    c.kind == "forces" ? "measured mean r_n of the tests" : "preset default: not stated in the source");
   s += fmt::format("friction = {}  # {}\n", o.friction, o.friction_note);
-  s += fmt::format("cell_size = {}\n", cell);
+  s += fmt::format("cell_size = {}  # {}\n", cell,
+                   o.quick ? "quick: t0/4 (pipeline check, not converged)"
+                           : fmt::format("min(t0/N, r_n/M), N = {} cells across t0, M = {:g} across r_n: {:.3g} and {:.3g} "
+                                         "cells",
+                                         cells_per_feed, cells_per_edge_radius, h / cell, r_n / cell));
+  s += fmt::format("cut_length = {}  # {}\n", cut, o.quick ? "quick: 4 cells" : "6 max(t0, r_n)");
+  s += fmt::format("workpiece_height = {}  # t0 + max(3 t0, 2 r_n)\n", height);
   s += "mass_scaling = \"auto\"     # workpiece inertia up to an inertia number of 0.002 (docs/mass_scaling.md)\n";
   s += fmt::format("particles_per_cell = {}\n", o.quick ? 1 : 2);
   s += fmt::format("snapshots = {}\n", o.snapshots > 0 ? o.snapshots : o.quick ? 2 : 20);

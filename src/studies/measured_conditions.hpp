@@ -63,7 +63,10 @@ struct CuttingCondition {
 struct ConditionRunSettings {
   std::string purpose = "validation";  // the case title's first word
   bool quick = false;       // cell = t0/4, 1 particle per cell, 4 cells of travel: a pipeline check
-  int cells_per_feed = 10;  // cell = t0 / cells_per_feed (chip-type conditions: at least chip_cells_per_feed)
+  int cells_per_feed = 10;  // N: cell <= t0 / N (chip-type conditions: at least chip_cells_per_feed)
+  // M: cell <= r_n / M, so that the rounded edge, which at thin feeds does most of the cutting, is
+  // resolved; 0 = no edge-radius limit (cell = t0 / N). Force conditions only (their r_n is measured).
+  double cells_per_edge_radius = 4.0;
   std::string material = "ti64-cutting";  // a library set
   std::string material_note = "the calibrated set of the default case (materials/ti6al4v.toml)";
   // Material keys changed from `material` (a [[material]] table with library = material in the case).
@@ -76,6 +79,22 @@ struct ConditionRunSettings {
 // Cells across t0 of chip-type conditions: at least the chip analysis' resolved count (below it
 // segments are particle roughness: at t0/5 the 5 and 75 m/s chip types came out swapped).
 int chip_cells_per_feed(int cells_per_feed);
+
+// The resolution rule of the measured conditions: cell = min(t0 / N, r_n / M), m (M = 0: t0 / N).
+double validation_cell_size_m(double uncut_chip_thickness_m, double edge_radius_m, int cells_per_feed,
+                              double cells_per_edge_radius);
+
+// Tool travel of a measured condition, m: 6 max(t0, r_n). The preset's steady window starts after
+// max(40 % of the cut, 3 t0), so this leaves a window of at least 3 t0 (and 3.6 r_n where the edge is
+// larger than the feed: there the deformed zone scales with r_n, not t0). It keeps thin feeds
+// affordable: at t0 = 0.01 mm, r_n = 40 um it is 0.24 mm (the former max(0.4 mm, 6 t0): 0.4 mm).
+double validation_cut_length_m(double uncut_chip_thickness_m, double edge_radius_m);
+
+// Workpiece height of a measured condition, m: t0 + max(3 t0, 2 r_n), i.e. the preset's 4 t0 unless the
+// edge radius is larger than 1.5 t0 (thin feeds): then the fixed base stays two edge radii below the
+// machined surface, below the ploughing zone under the edge, instead of 3 t0 (30 um at t0 = 0.01 mm,
+// less than one r_n).
+double validation_workpiece_height_m(double uncut_chip_thickness_m, double edge_radius_m);
 
 // The case file (TOML) of one condition. Width of cut 1 mm (forces per mm = forces in N for b = 1 mm),
 // rake 0°, clearance 11° (not in the data: stated as assumptions in the file).

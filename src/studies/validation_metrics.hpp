@@ -1,0 +1,52 @@
+#pragma once
+// The arithmetic of the validation report (mpmcut validate): errors over the conditions, speed trends,
+// and the cost of a run before it is started. Pure functions, so that tests can check them alone.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/scene.hpp"
+
+namespace mpmcut {
+
+// Least-squares slope of y over x; none with fewer than two distinct x.
+std::optional<double> least_squares_slope(const std::vector<double>& x, const std::vector<double>& y);
+
+// Speed trend of a force: the least-squares slope of F over ln(v), in the unit of F per e-fold of speed
+// (N/mm for forces per mm). Its sign says whether F rises or falls with speed; ln v because the measured
+// speeds span 10-500 m/min and the forces follow the logarithmic rate terms of the flow stress.
+std::optional<double> speed_trend_slope(const std::vector<double>& speeds, const std::vector<double>& forces);
+
+// (simulated - measured) / measured, -; none if either is missing or measured is 0.
+std::optional<double> relative_error(std::optional<double> simulated, double measured);
+
+// Mean and worst of |relative error| over conditions (the ones with a value).
+struct ErrorSummary {
+  int count = 0;
+  double mean_abs = 0.0;   // -
+  double worst_abs = 0.0;  // -
+  int worst_index = -1;    // index into the input of the worst one; -1 if count = 0
+};
+ErrorSummary summarize_errors(const std::vector<std::optional<double>>& relative_errors);
+
+// What a run of a scene will cost, from its set-up: particles, grid nodes and the explicit steps at the
+// first step's stable time step (CFL with mass scaling; the tool speed). Builds the Simulation (particles
+// and grid) but steps nothing. The step grows only where the wave speed falls (heating), so the count is
+// an upper estimate of a run that completes.
+struct RunCost {
+  long particles = 0;
+  long grid_nodes = 0;
+  double time_step_s = 0.0;
+  double steps = 0.0;
+  double mass_scaling_factor = 1.0;
+  double particle_steps() const { return static_cast<double>(particles) * steps; }
+};
+RunCost estimate_run_cost(const Scene& scene);
+
+// Core-seconds per particle-step of a cutting run (Johnson-Cook, damage, heating, uGIMP, MUSL, one thread),
+// for turning particle-steps into core-hours: 0.54 us measured on the condition h = 0.04 mm, 400.1 m/min at
+// t0/5 (4800 particles, 24939 steps, 65 s on one shared core; the estimate said 24100 steps), rounded up
+// for the grid and cache costs of larger runs. An order of magnitude, not a benchmark.
+inline constexpr double kCoreSecondsPerParticleStep = 0.6e-6;
+
+}  // namespace mpmcut

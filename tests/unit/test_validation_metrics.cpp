@@ -1,0 +1,73 @@
+// The pure arithmetic of `mpmcut validate`: the resolution rule of the measured conditions, the tool travel
+// and workpiece height rules, the speed-trend slope and the error summary.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "io/scene_parser.hpp"
+#include "studies/measured_conditions.hpp"
+#include "studies/validation_metrics.hpp"
+
+namespace mpmcut {
+namespace {
+
+// cell = min(t0/N, r_n/M): the feed limits thin feeds, the edge radius thick ones.
+TEST(ValidationResolution, CellIsTheSmallerOfFeedAndEdgeRadiusLimits) {
+  EXPECT_NEAR(validation_cell_size_m(0.01e-3, 40e-6, 10, 4.0), 1e-6, 1e-15);    // t0/10 = 1 um < r_n/4 = 10 um
+  EXPECT_NEAR(validation_cell_size_m(0.2e-3, 38.8e-6, 10, 4.0), 9.7e-6, 1e-15); // r_n/4 = 9.7 um < t0/10 = 20 um
+  EXPECT_NEAR(validation_cell_size_m(0.2e-3, 38.8e-6, 10, 0.0), 20e-6, 1e-15);  // M = 0: no edge-radius limit
+}
+
+TEST(ValidationResolution, CutAndWorkpieceScaleWithTheLargerOfFeedAndEdgeRadius) {
+  EXPECT_NEAR(validation_cut_length_m(0.01e-3, 40e-6), 240e-6, 1e-15);  // thin feed: the edge sets it
+  EXPECT_NEAR(validation_cut_length_m(0.1e-3, 37e-6), 0.6e-3, 1e-15);   // thick feed: 6 t0
+  EXPECT_NEAR(validation_workpiece_height_m(0.01e-3, 40e-6), 90e-6, 1e-15);  // t0 + 2 r_n, not 4 t0 = 40 um
+  EXPECT_NEAR(validation_workpiece_height_m(0.1e-3, 37e-6), 0.4e-3, 1e-15);  // the preset's 4 t0
+}
+
+// The case file carries the rule: the thin feed with a large edge gets t0/N, the thick one r_n/M, the chip-type
+// condition (preset 5 um edge, not measured) no edge limit; and the case reads back with those cells.
+TEST(ValidationResolution, CaseFileCellSizeFollowsTheRule) {
+  ConditionRunSettings s;
+  s.cells_per_feed = 10;
+  s.cells_per_edge_radius = 4.0;
+  const auto cell_of = [&](const char* kind, double h_mm, double r_um) {
+    CuttingCondition c;
+    c.id = "test";
+    c.kind = kind;
+    c.speed_m_per_s = 5.0;
+    c.h_mm = h_mm;
+    c.edge_radius_um = r_um;
+    return parse_scene(condition_case_text(c, s), "test.toml").cutting->cell_size;
+  };
+  EXPECT_NEAR(cell_of("forces", 0.01, 39.8), 1e-6, 1e-12);
+  EXPECT_NEAR(cell_of("forces", 0.2, 38.8), 9.7e-6, 1e-12);
+  EXPECT_NEAR(cell_of("chip", 0.1, 5.0), 10e-6, 1e-12);
+}
+
+// Fc = a + b ln v is recovered exactly; a falling force has a negative slope.
+TEST(ValidationTrend, SlopeOverLogSpeed) {
+  const std::vector<double> v{10, 100, 400};
+  std::vector<double> f;
+  for (double x : v) f.push_back(200.0 - 7.5 * std::log(x));
+  ASSERT_TRUE(speed_trend_slope(v, f).has_value());
+  EXPECT_NEAR(*speed_trend_slope(v, f), -7.5, 1e-12);
+  // Least squares, not end points: (1,0), (2,2), (3,1) has slope 0.5.
+  EXPECT_NEAR(*least_squares_slope({1, 2, 3}, {0, 2, 1}), 0.5, 1e-12);
+  EXPECT_FALSE(speed_trend_slope({100}, {1}).has_value());
+  EXPECT_FALSE(speed_trend_slope({100, 100}, {1, 2}).has_value());  // one distinct speed
+}
+
+TEST(ValidationErrors, MeanAndWorstOfAbsoluteRelativeErrors) {
+  EXPECT_NEAR(*relative_error(90.0, 100.0), -0.1, 1e-15);
+  EXPECT_FALSE(relative_error(std::nullopt, 100.0).has_value());
+  const ErrorSummary s = summarize_errors({-0.1, std::nullopt, 0.3, -0.2});
+  EXPECT_EQ(s.count, 3);
+  EXPECT_NEAR(s.mean_abs, 0.2, 1e-15);
+  EXPECT_NEAR(s.worst_abs, 0.3, 1e-15);
+  EXPECT_EQ(s.worst_index, 2);
+  EXPECT_EQ(summarize_errors({}).count, 0);
+}
+
+}  // namespace
+}  // namespace mpmcut
