@@ -5,6 +5,7 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
+#include <fmt/format.h>
 
 #include "app/analyze_command.hpp"
 #include "app/bench_command.hpp"
@@ -12,6 +13,7 @@
 #include "app/sweep_command.hpp"
 #include "app/validate_command.hpp"
 #include "app/run_case.hpp"
+#include "core/run_estimate.hpp"
 #include "io/input_error.hpp"
 #include "io/scene_parser.hpp"
 
@@ -35,6 +37,10 @@ int main(int argc, char** argv) {
   run->add_flag("--no-progress", no_progress, "Do not print progress");
   bool no_plots = false;
   run->add_flag("--no-plots", no_plots, "Do not draw the PNG pictures at the end of a cutting run");
+  bool check_only = false;
+  run->add_flag("--check", check_only,
+                "Only parse and validate the case and estimate its memory and step count, then exit "
+                "(0: it would start; 2: input error); writes nothing");
   // Checkpoints (docs/reliability.md): a step count or a wall time.
   const auto checkpoint_check = [](const std::string& text) -> std::string {
     try {
@@ -99,6 +105,21 @@ int main(int argc, char** argv) {
   } catch (const InputError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return kExitInputError;
+  }
+  if (check_only) {
+    const RunEstimate e = estimate_run(scene);
+    const double available = available_memory_bytes();
+    try {
+      check_run_fits(scene, e, available);
+    } catch (const InputError& error) {
+      std::cerr << "error: " << error.what() << "\n";
+      return kExitInputError;
+    }
+    std::cout << fmt::format("{}: valid; about {:.3g} particles, {:.3g} grid nodes, {} of memory ({} available), "
+                             "{:.3g} steps\n",
+                             case_file.empty() ? "built-in default case" : case_file, e.particles, e.grid_nodes,
+                             format_bytes(e.bytes), format_bytes(available), e.steps);
+    return kExitComplete;
   }
   if (out_dir.empty()) {
     const std::string name = case_file.empty() ? "default" : std::filesystem::path(case_file).stem().string();

@@ -16,6 +16,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "core/run_estimate.hpp"
 #include "core/simulation.hpp"
 #include "io/atomic_file.hpp"
 #include "io/checkpoint.hpp"
@@ -548,6 +549,14 @@ int set_threads(int requested) {
 // ---------------------------------------------------------------------------------------------
 
 int run_case(const Scene& scene, const RunOptions& options) {
+  // Before the result directory and the first large allocation: a run that cannot fit in memory
+  // or cannot finish is the user's input error, not a crash or a hang later.
+  try {
+    check_run_fits(scene);
+  } catch (const InputError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return kExitInputError;
+  }
   SignalGuard signals;
   const int threads = set_threads(options.threads);
   fs::path root;
