@@ -13,12 +13,15 @@
 #include "app/sweep_command.hpp"
 #include "app/validate_command.hpp"
 #include "app/run_case.hpp"
+#include "app/stop_signal.hpp"
 #include "core/run_estimate.hpp"
 #include "io/input_error.hpp"
 #include "io/scene_parser.hpp"
 
 int main(int argc, char** argv) {
   using namespace mpmcut;
+  // First thing: a Ctrl-C or SIGTERM while the case is still being parsed must stop the program too.
+  install_stop_handlers();
   CLI::App app{"mpmcut: material point method simulation of high-speed orthogonal metal cutting (2D plane strain)"};
   app.set_version_flag("--version", std::string("mpmcut ") + MPMCUT_VERSION);
   app.require_subcommand(1);
@@ -129,6 +132,12 @@ int main(int argc, char** argv) {
   run_options.progress = !no_progress;
   run_options.checkpoint_every = parse_checkpoint_interval(checkpoint_every);
   const int code = run_case(scene, run_options);
+  // A signal that came after the last step: the results are complete, but the program stops here
+  // (no pictures) with the documented code.
+  if (stop_requested()) {
+    std::cerr << "interrupted after the run completed: results complete, pictures not drawn\n";
+    return kExitInterrupted;
+  }
   // A complete cut gets its pictures (chip fields, forces) as `mpmcut plot` draws them; a missing or
   // failing plotter is a warning, never a failed run.
   if (code == 0 && scene.cutting && !no_plots) {

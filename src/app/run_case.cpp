@@ -16,6 +16,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "app/stop_signal.hpp"
 #include "core/run_estimate.hpp"
 #include "core/simulation.hpp"
 #include "io/atomic_file.hpp"
@@ -79,34 +80,21 @@ namespace {
 // ---------------------------------------------------------------------------------------------
 // Signals
 
-// SIGINT/SIGTERM: the first asks the loop to stop after the current step (it then writes a
-// checkpoint and the outputs so far); a second one exits at once (the directory stays resumable
-// from the last checkpoint). SIGXFSZ is ignored so that a file-size limit surfaces as an EFBIG
-// write error with a message instead of killing the process.
-std::atomic<int> g_stop_requests{0};
-extern "C" void on_stop_signal(int) {
-  if (g_stop_requests.fetch_add(1) >= 1) _exit(kExitInterrupted);
-}
-
+// SIGINT/SIGTERM are handled program-wide (app/stop_signal): during set-up a signal exits at once;
+// in the step loop (DeferStops in run_to_end) the first asks the loop to stop after the current step
+// (it then writes a checkpoint and the outputs so far), a second exits at once (the directory stays
+// resumable from the last checkpoint). SIGXFSZ is ignored so that a file-size limit surfaces as an
+// EFBIG write error with a message instead of killing the process.
 struct SignalGuard {
-  struct sigaction old_int {}, old_term {}, old_xfsz {};
+  struct sigaction old_xfsz {};
   SignalGuard() {
-    g_stop_requests = 0;
-    struct sigaction sa {};
-    sa.sa_handler = on_stop_signal;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, &old_int);
-    sigaction(SIGTERM, &sa, &old_term);
+    install_stop_handlers();
     struct sigaction ignore {};
     ignore.sa_handler = SIG_IGN;
     sigemptyset(&ignore.sa_mask);
     sigaction(SIGXFSZ, &ignore, &old_xfsz);
   }
-  ~SignalGuard() {
-    sigaction(SIGINT, &old_int, nullptr);
-    sigaction(SIGTERM, &old_term, nullptr);
-    sigaction(SIGXFSZ, &old_xfsz, nullptr);
-  }
+  ~SignalGuard() { sigaction(SIGXFSZ, &old_xfsz, nullptr); }
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -383,6 +371,7 @@ class CaseRun {
 
 int CaseRun::run_to_end() {
   const Scene& scene = sim_.scene();
+  const DeferStops defer_stops;  // from here a signal stops the loop after a step, with a checkpoint
   Progress progress(scene.solver.end_time, std::cerr, options_.progress ? std::nullopt : std::optional<bool>(false));
   const char* status = run_status::complete;
   std::string message;
@@ -410,7 +399,7 @@ int CaseRun::run_to_end() {
           while (next_snapshot_ <= sim_.time() + eps) next_snapshot_ += snap_dt > 0 ? snap_dt : end;
         }
         if (options_.progress) progress.update(sim_.time(), sim_.step_count(), sim_.last_dt());
-        if (g_stop_requests.load() > 0) {
+        if (stop_requested()) {
           status = run_status::interrupted;
           message = fmt::format("interrupted by a signal at step {}, time {:.6g} s; continue with: mpmcut resume {}",
                                 sim_.step_count(), sim_.time(), root_.string());

@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/plot_command.hpp"
+#include "app/stop_signal.hpp"
 #include "io/scene_parser.hpp"
 #include "io/atomic_file.hpp"
 
@@ -48,9 +49,13 @@ pid_t spawn_child(const std::string& exe, const ChildRun& run) {
   c_argv.push_back(nullptr);
   std::cout.flush();
   std::cerr.flush();
+  const pid_t parent = getpid();
   const pid_t pid = fork();
   if (pid != 0) return pid;
   setpgid(0, 0);
+  // If the sweep itself dies (even by SIGKILL) its runs get SIGTERM: they checkpoint and stop
+  // instead of running on as orphans.
+  die_with_parent(parent);
   const int in = open("/dev/null", O_RDONLY);
   const int log = open(run.log_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   if (in >= 0) dup2(in, STDIN_FILENO);
@@ -419,6 +424,9 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
   table.write_csv(out / "sweep.csv");
   write_file_atomically(out / "sweep.md", [&](std::ostream& s) {
     s << "# Sweep of " << o.case_file << "\n\n";
+    if (!completed)
+      s << "**Interrupted** by a signal: the sweep is incomplete; the stopped cases are resumable "
+           "(mpmcut resume <case directory>), the cases not started are marked \"not run\".\n\n";
     s << fmt::format("{} cases, {} complete, {} not complete. Forces are means per unit width of cut over the "
                      "steady window of each run (column \"force window\"; where a run ended before its steady "
                      "window, the mean raw force over the last half of the cut). Chip columns come from the chip "
@@ -430,7 +438,7 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
   });
   std::cout << "wrote " << (out / "sweep.csv").string() << " and " << (out / "sweep.md").string() << "\n";
 
-  if (!o.no_plots) {
+  if (!o.no_plots && completed) {  // an interrupted sweep stops here: no plots of a partial sweep
     std::string why;
     if (!python_plotting_available(false, why)) {
       std::cerr << "warning: no sweep plots: " << why << "\n";
