@@ -416,7 +416,7 @@ Scene read_scene(const toml::table& root, const std::shared_ptr<const InputSourc
   scene.solver = read_solver(top.table("solver"));
   scene.output = read_output(top.optional_table("output"));
   scene.thermal = read_thermal(top.optional_table("thermal"));
-  scene.body_force = top.vec2("body_force", scene.body_force, Range::closed(-1e6, 1e6, "m/s^2"));
+  scene.body_force = top.vec2("body_force", scene.body_force, Range::closed(-1e12, 1e12, "m/s^2"));
 
   const MaterialLibrary& library = builtin_material_library();
   for (TableReader& t : top.array_of_tables("material")) {
