@@ -112,6 +112,9 @@ std::vector<std::string> history_columns() {
           "friction_work_J_per_m",
           "viscous_dissipation_J_per_m",
           "external_work_J_per_m",
+          "transfer_dissipation_J_per_m",
+          "contact_safeguard_J_per_m",
+          "removed_energy_J_per_m",
           "momentum_x_kg_m_per_s_per_m",
           "momentum_y_kg_m_per_s_per_m",
           "max_temperature_K"};
@@ -164,7 +167,8 @@ class RunOutputs {
     const EnergyTotals& e = sim_.energy();
     const Vec2 m = sim_.total_momentum();
     history_.row({sim_.time(), static_cast<double>(sim_.step_count()), sim_.last_dt(), e.kinetic, e.elastic,
-                  e.plastic_work, e.heat, e.damage_dissipation, e.friction, e.viscous, e.external_work, m.x(), m.y(),
+                  e.plastic_work, e.heat, e.damage_dissipation, e.friction, e.viscous, e.external_work, e.transfer_dissipation, e.contact_safeguard,
+                  e.removed_energy, m.x(), m.y(),
                   sim_.max_temperature()});
   }
 
@@ -255,7 +259,16 @@ nlohmann::json summary_json(const Simulation& sim, const char* status, double wa
                          {"damage_dissipation", e.damage_dissipation},
                          {"friction_work", e.friction},
                          {"viscous_dissipation", e.viscous},
-                         {"external_work", e.external_work}};
+                         {"external_work", e.external_work},
+                         {"transfer_dissipation", e.transfer_dissipation},
+                         {"contact_safeguard", e.contact_safeguard},
+                         {"removed_energy", e.removed_energy}};
+  // initial energy + external work = the rest, term by term (docs/cutting.md, "Energy balance");
+  // the residual is what no term accounts for, relative to the energy that came in.
+  const double residual = energy_balance_residual(e);
+  j["energy_J_per_m"]["initial"] = e.initial;
+  j["energy_balance"] = {{"residual_J_per_m", residual},
+                         {"relative_residual", residual / std::max(std::abs(e.initial) + std::abs(e.external_work), 1e-300)}};
   j["max_temperature_K"] = sim.max_temperature();
   nlohmann::json rigid = nlohmann::json::array();
   for (const auto& r : sim.rigid_bodies())

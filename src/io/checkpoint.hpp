@@ -81,7 +81,8 @@ struct Checkpoint {
   void restore(Simulation& sim) &&;
 };
 
-inline constexpr std::uint32_t kCheckpointFormatVersion = 3;  // 2: EnergyTotals::viscous; 3: Particles::fracture_energy
+// 2: EnergyTotals::viscous; 3: Particles::fracture_energy; 4: EnergyTotals' algorithmic terms
+inline constexpr std::uint32_t kCheckpointFormatVersion = 4;
 
 // Hash (64-bit FNV-1a) of the expanded scene as write_scene() prints it: equal for scenes that
 // are equal, whatever file they came from.

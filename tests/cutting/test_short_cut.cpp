@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "contact/rigid_polygon.hpp"
@@ -39,6 +40,7 @@ struct CutResult {
   double deepest_penetration_m = 0.0;  // most negative signed distance of a particle to the tool
   double chip_rise_m = 0.0;            // highest particle above the workpiece's top surface
   double balance_error = 0.0;          // (material side - tool work) / tool work
+  double balance_error_without_algorithmic = 0.0;
   bool finite = true;
 };
 
@@ -71,8 +73,11 @@ CutResult run_cut(const CuttingParameters& c) {
   r.mean_thrust_force_N_per_m = mean.y();
   sim.refresh_energy();
   const EnergyTotals& e = sim.energy();
-  const double material_side = e.kinetic + e.elastic + e.plastic_work + e.damage_dissipation + e.friction + e.viscous;
-  r.balance_error = (material_side - e.external_work) / e.external_work;
+  // Every term of the ledger, the algorithmic ones included (FLIP/PIC blend, contact safeguard,
+  // removed particles): the residual is what no term accounts for.
+  r.balance_error = energy_balance_residual(e) / e.external_work;
+  r.balance_error_without_algorithmic =
+      (energy_balance_residual(e) - e.transfer_dissipation - e.contact_safeguard - e.removed_energy) / e.external_work;
   return r;
 }
 
@@ -88,8 +93,11 @@ TEST(ShortCut, ChipFormsNoPenetrationPositiveForcesEnergyCloses) {
   EXPECT_TRUE(r.finite);
   EXPECT_GT(r.mean_cutting_force_N_per_m, 0.0);
   EXPECT_GT(r.mean_thrust_force_N_per_m, 0.0);
-  // Work done by the tool = kinetic + elastic + plastic + damage + friction, within 5%.
-  EXPECT_LT(std::abs(r.balance_error), 0.05) << "relative energy balance error " << r.balance_error;
+  // Work done by the tool = kinetic + elastic + plastic + damage + friction + the algorithmic terms,
+  // within 1 % (docs/cutting.md, "Energy balance").
+  std::printf("short cut: energy balance residual %.3f %% of the tool work (%.3f %% without the algorithmic terms)\n",
+              100 * r.balance_error, 100 * r.balance_error_without_algorithmic);
+  EXPECT_LT(std::abs(r.balance_error), 0.01) << "relative energy balance error " << r.balance_error;
 }
 
 // Merchant (1945) band for the cutting force per unit width at the reference conditions used by
