@@ -1,7 +1,7 @@
 #include "io/material_library.hpp"
 
 #include <cmath>
-#include <tuple>
+#include <algorithm>
 
 #include <fmt/format.h>
 
@@ -38,29 +38,32 @@ void validate_material(TableReader& t, const MaterialParameters& m) {
   t.check("thermal_conductivity", m.thermal_conductivity, Range::closed(0.0, 1e4, "W/(m K)"));
   t.check("taylor_quinney", m.taylor_quinney, Range::closed(0.0, 1.0));
   t.check("room_temperature", m.room_temperature, Range::open(0.0, 1e4, "K"));
-  // Keys that only one model uses are still checked when given: a wrong value must not hide
-  // until someone switches the model on.
-  const auto given = [&](std::string_view key) { return t.has(key); };
-  if (jc || given("melting_temperature"))
-    t.check("melting_temperature", m.melting_temperature,
-            Range::open_closed(m.room_temperature, 1e4, "K", "above room_temperature"));
-  for (const auto& [key, value, range] :
-       {std::tuple{"jc_A", m.jc_A, Range::closed(0.0, 1e11, "Pa")}, {"jc_B", m.jc_B, Range::closed(0.0, 1e11, "Pa")},
-        {"jc_n", m.jc_n, dimensionless}, {"jc_C", m.jc_C, dimensionless}, {"jc_m", m.jc_m, Range::open_closed(0.0, 10.0)},
-        {"reference_strain_rate", m.reference_strain_rate, Range::open_closed(0.0, 1e12, "1/s")}})
-    if (jc || given(key)) t.check(key, value, range);
+  // A key the model uses is checked against its range; one it does not use is still checked, so
+  // that a wrong value does not hide until the model is switched on, against the same range
+  // widened to admit 0 (its default, which the expanded scene.toml writes back).
+  const auto check_model_key = [&](const char* key, double value, bool used, Range range) {
+    if (!used) range.min = std::min(range.min, 0.0), range.min_open = false, range.note = "";
+    t.check(key, value, range);
+  };
+  check_model_key("melting_temperature", m.melting_temperature, jc,
+                  Range::open_closed(m.room_temperature, 1e4, "K", "above room_temperature"));
+  check_model_key("jc_A", m.jc_A, jc, Range::closed(0.0, 1e11, "Pa"));
+  check_model_key("jc_B", m.jc_B, jc, Range::closed(0.0, 1e11, "Pa"));
+  check_model_key("jc_n", m.jc_n, jc, dimensionless);
+  check_model_key("jc_C", m.jc_C, jc, dimensionless);
+  check_model_key("jc_m", m.jc_m, jc, Range::open_closed(0.0, 10.0));
+  check_model_key("reference_strain_rate", m.reference_strain_rate, jc, Range::open_closed(0.0, 1e12, "1/s"));
   t.check("strain_rate_smoothing_time", m.strain_rate_smoothing_time, Range::closed(0.0, 1.0, "s"));
   const bool mg = m.eos == EquationOfState::MieGruneisen;
-  if (mg || given("mg_c0")) t.check("mg_c0", m.mg_c0, Range::open_closed(0.0, 1e5, "m/s", "with eos = \"mie_gruneisen\""));
-  if (mg || given("mg_s")) t.check("mg_s", m.mg_s, dimensionless);
-  if (mg || given("mg_gamma0")) t.check("mg_gamma0", m.mg_gamma0, dimensionless);
+  check_model_key("mg_c0", m.mg_c0, mg, Range::open_closed(0.0, 1e5, "m/s", "with eos = \"mie_gruneisen\""));
+  check_model_key("mg_s", m.mg_s, mg, dimensionless);
+  check_model_key("mg_gamma0", m.mg_gamma0, mg, dimensionless);
   t.check("bulk_viscosity_linear", m.bulk_viscosity_linear, dimensionless);
   t.check("bulk_viscosity_quadratic", m.bulk_viscosity_quadratic, dimensionless);
   for (const auto& [key, value] : {std::pair{"jc_D1", m.jc_D1}, {"jc_D2", m.jc_D2}, {"jc_D3", m.jc_D3},
                                    {"jc_D4", m.jc_D4}, {"jc_D5", m.jc_D5}})
     t.check(key, value, Range::closed(-100.0, 100.0));
-  if (!m.damage_enabled && given("min_failure_strain"))
-    t.check("min_failure_strain", m.min_failure_strain, Range::open_closed(0.0, 100.0));
+  if (!m.damage_enabled) check_model_key("min_failure_strain", m.min_failure_strain, false, Range::open_closed(0.0, 100.0));
   if (m.damage_enabled) {
     // Damage is driven by plastic strain, which an elastic material never has.
     t.check("damage", jc, "false unless model = \"johnson_cook\"", 1.0);
@@ -73,11 +76,10 @@ void validate_material(TableReader& t, const MaterialParameters& m) {
   t.check("fracture_transition_strain_rate", m.fracture_transition_strain_rate,
           Range::closed(0.0, 1e12, "1/s", "0 = fracture energy independent of rate"));
   const bool rate_dependent = m.fracture_transition_strain_rate > 0.0;
-  if (rate_dependent || given("fracture_energy_brittle"))
-    t.check("fracture_energy_brittle", m.fracture_energy_brittle,
-            Range::open_closed(0.0, 1e8, "J/m^2", "the high-rate fracture energy, when fracture_transition_strain_rate > 0"));
-  if (rate_dependent || given("fracture_transition_exponent"))
-    t.check("fracture_transition_exponent", m.fracture_transition_exponent, Range::open_closed(0.0, 100.0));
+  check_model_key("fracture_energy_brittle", m.fracture_energy_brittle, rate_dependent,
+                  Range::open_closed(0.0, 1e8, "J/m^2", "the high-rate fracture energy, when fracture_transition_strain_rate > 0"));
+  check_model_key("fracture_transition_exponent", m.fracture_transition_exponent, rate_dependent,
+                  Range::open_closed(0.0, 100.0));
   t.check("max_damage", m.max_damage, Range::open_closed(0.0, 1.0));
 }
 

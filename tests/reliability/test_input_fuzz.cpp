@@ -60,9 +60,13 @@ const std::vector<std::pair<std::string, std::string>> kAllowed = {
 };
 
 // Allowed in some cases and refused in others, with a message naming the key: conduction needs a
-// heat capacity (elastic-unit has none), damage needs model = "johnson_cook".
+// heat capacity (elastic-unit has none), damage needs model = "johnson_cook", and:
 const std::vector<std::pair<std::string, std::string>> kAllowedInContext = {
-    {"thermal.conduction", "true"}, {"damage", "true"}, {"specific_heat", "0"}};
+    {"thermal.conduction", "true"}, {"damage", "true"}, {"specific_heat", "0"},
+    // 0 (the default) for a key the material's model does not use (e.g. Johnson-Cook keys of an
+    // elastic material); refused where the model uses it.
+    {"melting_temperature", "0"}, {"jc_m", "0"}, {"reference_strain_rate", "0"}, {"mg_c0", "0"},
+    {"min_failure_strain", "0"}, {"fracture_energy_brittle", "0"}, {"fracture_transition_exponent", "0"}};
 
 // `pattern` matches `key` exactly or as its last dotted part(s); '*' stands for an index.
 bool matches(const std::string& pattern, const std::string& key) {
@@ -168,6 +172,15 @@ TEST(InputFuzz, EveryKeyOfEveryShippedCaseRejectsHostileValuesOrStartsFine) {
                              (key.ends_with(".name") && output.find("material") != std::string::npos);
           EXPECT_TRUE(named) << where << "the message does not name the key:\n" << output;
           EXPECT_LT(seconds, 5.0);
+          // The real run refuses it too, before it creates a result directory.
+          if (value == "nan") {
+            const fs::path out = dir / "refused";
+            const CliResult r = run_mpmcut({"run", e.path().string(), "--set", set, "--out", out.string(),
+                                            "--no-progress", "--no-plots"},
+                                           log);
+            EXPECT_EQ(r.exit_code, 2) << where << r.output;
+            EXPECT_FALSE(fs::exists(out)) << where << "a refused run created its result directory";
+          }
           continue;
         }
         EXPECT_EQ(code, 0) << where << "neither an input error (2) nor accepted (0), exit " << code << ":\n" << output;

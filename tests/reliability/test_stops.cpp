@@ -109,18 +109,20 @@ TEST_F(Stops, SigtermAtAnyMomentOfARunStopsIt) {
   EXPECT_GT(stopped, 0) << "no SIGTERM arrived before the run finished: the test proves nothing";
 }
 
-// Set-up of a big scene (a million particles, ~0.5 GB) takes seconds before the first step; a
-// SIGTERM then stops the program at once, not after the set-up.
+// Set-up of a big scene (a million particles, 2 million grid nodes, ~0.8 GB) takes seconds before
+// the first step; a SIGTERM then stops the program at once, not after the set-up.
 TEST_F(Stops, SigtermDuringSetupOfAHugeSceneExitsAtOnce) {
   const fs::path case_file = dir_ / "big.toml";
   std::string text = kDiskCase;
-  text.replace(text.find("cell_size = 2.0e-3"), 18, "cell_size = 4.0e-5");
+  text.replace(text.find("cell_size = 2.0e-3"), 18, "cell_size = 7.0e-5");
   write_file(case_file, text);
   const fs::path out = dir_ / "big";
   const pid_t pid = spawn_mpmcut({"run", case_file.string(), "--out", out.string(), "--no-progress", "--threads", "1"},
                                  {dir_ / "big.log"});
-  // Until the result directory exists: parsing and the estimate are done, the set-up has begun.
-  ASSERT_TRUE(wait_until([&] { return fs::exists(out / "summary.json"); }, 20.0)) << read_file(dir_ / "big.log");
+  // Until the expanded scene is written: parsing and the estimate are done, and the simulation's
+  // grid and particles are being built (summary.json is written once they are).
+  ASSERT_TRUE(wait_until([&] { return fs::exists(out / "scene.toml"); }, 20.0)) << read_file(dir_ / "big.log");
+  const bool built_already = fs::exists(out / "summary.json");
   const auto sent = std::chrono::steady_clock::now();
   ::kill(pid, SIGTERM);
   const int code = exit_within(pid, 5.0);
@@ -128,7 +130,9 @@ TEST_F(Stops, SigtermDuringSetupOfAHugeSceneExitsAtOnce) {
   EXPECT_EQ(code, 130) << read_file(dir_ / "big.log");
   EXPECT_LT(seconds, 1.0) << "the stop waited for the set-up";
   EXPECT_NE(summary_status(out), "complete");
+  EXPECT_FALSE(fs::exists(out / "checkpoints" / "latest")) << "it went on to the step loop";
   EXPECT_NE(read_file(dir_ / "big.log").find("interrupted"), std::string::npos);
+  EXPECT_FALSE(built_already) << "the set-up was over before the signal: the test did not hit it";
 }
 
 // A sweep stopped while its runs step: every run stops (checkpoint, "interrupted"), no child is
