@@ -633,6 +633,11 @@ int resume_case(const RunOptions& options) {
                               loaded->file.string()));
   }
   scene.source_file = c.loop.case_file;
+  try {
+    check_run_fits(scene);  // the machine resuming may have less memory than the one that started
+  } catch (const InputError& e) {
+    return refuse(e.what());
+  }
   if (c.loop.mpmcut_version != MPMCUT_VERSION)
     std::cerr << "warning: the checkpoint was written by mpmcut " << c.loop.mpmcut_version << ", this is "
               << MPMCUT_VERSION << "; the continuation may differ from an uninterrupted run\n";
