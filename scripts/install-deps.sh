@@ -6,6 +6,7 @@ packages=(
   g++ cmake ninja-build make pkg-config
   libeigen3-dev libtomlplusplus-dev libcli11-dev libfmt-dev libpng-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev libomp-dev
+  libnlopt-dev openmpi-bin libopenmpi-dev
   python3-matplotlib python3-meshio python3-numpy
 )
 missing=()

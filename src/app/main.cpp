@@ -11,6 +11,7 @@
 #include "app/bench_command.hpp"
 #include "app/plot_command.hpp"
 #include "app/sweep_command.hpp"
+#include "app/calibrate_command.hpp"
 #include "app/validate_command.hpp"
 #include "app/run_case.hpp"
 #include "app/stop_signal.hpp"
@@ -37,6 +38,10 @@ int main(int argc, char** argv) {
   run->add_option("-t,--threads", run_options.threads, "OpenMP threads (default: all cores)")->check(CLI::Range(1, 1024));
   run->add_option("-s,--set", overrides, "Override an input key, e.g. --set solver.cfl=0.3 (repeatable)");
   run->add_flag("-f,--force", run_options.force, "Overwrite an existing result directory");
+  bool keep_complete = false;
+  run->add_flag("--keep-complete", keep_complete,
+                "For studies run in parts: if the result directory holds the complete run of the same scene, keep it "
+                "(exit 0); if it holds an unfinished one with a checkpoint, resume it; else run afresh (as --force)");
   run->add_flag("--no-progress", no_progress, "Do not print progress");
   bool no_plots = false;
   run->add_flag("--no-plots", no_plots, "Do not draw the PNG pictures at the end of a cutting run");
@@ -88,6 +93,7 @@ int main(int argc, char** argv) {
   add_plot_command(app);
   add_sweep_command(app);
   add_validate_command(app);
+  add_calibrate_command(app);
   add_analyze_command(app);
 
   CLI11_PARSE(app, argc, argv);
@@ -131,7 +137,22 @@ int main(int argc, char** argv) {
   run_options.out_dir = out_dir;
   run_options.progress = !no_progress;
   run_options.checkpoint_every = parse_checkpoint_interval(checkpoint_every);
-  const int code = run_case(scene, run_options);
+  int code = -1;
+  if (keep_complete) {
+    switch (existing_run(out_dir, scene)) {
+      case ExistingRun::Complete:
+        std::cerr << "kept: " << out_dir << " already holds the complete run of this scene\n";
+        return kExitComplete;
+      case ExistingRun::Resumable:
+        std::cerr << "resuming the unfinished run of this scene in " << out_dir << "\n";
+        code = resume_case(run_options);
+        break;
+      case ExistingRun::None:
+        run_options.force = true;
+        break;
+    }
+  }
+  if (code < 0) code = run_case(scene, run_options);
   // A signal that came after the last step: the results are complete, but the program stops here
   // (no pictures) with the documented code.
   if (stop_requested()) {

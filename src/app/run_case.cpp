@@ -10,6 +10,9 @@
 #include <chrono>
 #include <csignal>
 #include <fcntl.h>
+#include <fstream>
+#include <iterator>
+#include <sstream>
 #include <iostream>
 #include <unistd.h>
 
@@ -23,6 +26,7 @@
 #include "io/checkpoint.hpp"
 #include "io/csv_writer.hpp"
 #include "io/input_error.hpp"
+#include "app/mass_scaling_report.hpp"
 #include "io/json_summary.hpp"
 #include "io/progress.hpp"
 #include "io/pvd_writer.hpp"
@@ -270,6 +274,7 @@ nlohmann::json summary_json(const Simulation& sim, const char* status, double wa
   j["energy_balance"] = {{"residual_J_per_m", residual},
                          {"relative_residual", residual / std::max(std::abs(e.initial) + std::abs(e.external_work), 1e-300)}};
   j["max_temperature_K"] = sim.max_temperature();
+  j["mass_scaling"] = to_json(mass_scaling_report(sim));
   nlohmann::json rigid = nlohmann::json::array();
   for (const auto& r : sim.rigid_bodies())
     rigid.push_back({{"name", r.name},
@@ -389,6 +394,7 @@ int CaseRun::run_to_end() {
   const char* status = run_status::complete;
   std::string message;
   int exit_code = kExitComplete;
+  std::cerr << console_line(mass_scaling_report(sim_));
   try {
     RunOutputs& out = *out_;
     const double end = scene.solver.end_time;
@@ -583,6 +589,24 @@ int run_case(const Scene& scene, const RunOptions& options) {
     return kExitOutputError;
   }
   return run->run_to_end();
+}
+
+ExistingRun existing_run(const fs::path& dir, const Scene& scene) {
+  std::error_code ec;
+  if (!fs::exists(dir / "scene.toml", ec) || !fs::exists(dir / "summary.json", ec)) return ExistingRun::None;
+  std::ostringstream expected;
+  write_scene(scene, expected);
+  std::ifstream in(dir / "scene.toml", std::ios::binary);
+  const std::string found((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (found != expected.str()) return ExistingRun::None;
+  std::string status;
+  try {
+    status = read_json(dir / "summary.json").value("status", "");
+  } catch (const std::exception&) {
+    return ExistingRun::None;
+  }
+  if (status == run_status::complete) return ExistingRun::Complete;
+  return fs::exists(dir / "checkpoints" / "latest", ec) ? ExistingRun::Resumable : ExistingRun::None;
 }
 
 int resume_case(const RunOptions& options) {

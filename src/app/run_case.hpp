@@ -47,6 +47,12 @@ enum ExitCode : int {
 // Runs `scene`; returns one of ExitCode. Messages go to stderr.
 int run_case(const Scene& scene, const RunOptions& options);
 
+// What a result directory holds for `scene` (studies rerun with `run --keep-complete`: a complete run
+// of the same scene is kept, an unfinished one with a checkpoint is resumed, anything else is rerun).
+// "The same scene" = its scene.toml is byte for byte what this scene writes.
+enum class ExistingRun { None, Complete, Resumable };
+ExistingRun existing_run(const std::filesystem::path& dir, const Scene& scene);
+
 // Continues the run in options.out_dir from its newest valid checkpoint (scene from its
 // scene.toml); returns one of ExitCode.
 int resume_case(const RunOptions& options);

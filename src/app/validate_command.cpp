@@ -11,6 +11,8 @@
 
 #include "analysis/chip_analysis.hpp"
 #include "app/plot_command.hpp"
+#include "studies/measured_conditions.hpp"
+#include "studies/task_farm.hpp"
 #include "app/sweep_command.hpp"
 #include "io/atomic_file.hpp"
 
@@ -25,26 +27,10 @@ constexpr const char* kChipFile = "data/experiments/ti64_chip_morphology.csv";
 constexpr const char* kForcesSource =
     "Klippel et al., Int. J. Adv. Manuf. Technol. 135 (2024) 2871-2908, per-test data file [V]";
 
-// Rows of a data/experiments CSV: '#' lines are comments, the first other line names the columns.
-// The files are written without quoted cells (see their headers), so a plain split suffices.
-std::vector<std::map<std::string, std::string>> read_data_csv(std::string_view text) {
+// Rows of a data/experiments CSV as maps (the chip-type file: text columns).
+std::vector<std::map<std::string, std::string>> read_data_csv(std::string_view text, const std::string& source) {
   std::vector<std::map<std::string, std::string>> rows;
-  std::vector<std::string> names;
-  std::istringstream in{std::string(text)};
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line[0] == '#') continue;
-    std::vector<std::string> cells;
-    std::string cell;
-    for (std::istringstream ss(line); std::getline(ss, cell, ',');) cells.push_back(cell);
-    if (!line.empty() && line.back() == ',') cells.push_back("");
-    if (names.empty()) {
-      names = cells;
-      continue;
-    }
-    std::map<std::string, std::string> row;
-    for (std::size_t i = 0; i < names.size(); ++i) row[names[i]] = i < cells.size() ? cells[i] : "";
-    rows.push_back(row);
-  }
+  for (const DataFile::Row& r : read_data_file(text, source).rows) rows.push_back(r.cells);
   return rows;
 }
 
@@ -60,52 +46,18 @@ struct Measured {
 };
 
 // One simulated condition: what the run is for and which measurement it is compared with.
-struct Condition {
-  std::string id;          // result directory name
-  std::string kind;        // "forces" | "chip"
-  double speed_m_per_s;
-  double h_mm;
-  double edge_radius_um;   // measured r_n for force conditions; the preset's 5 um where the source gives none
+struct Condition : CuttingCondition {
   const Measured* measured = nullptr;
   std::map<std::string, std::string> chip;  // the ti64_chip_morphology.csv row for chip conditions
   CaseResult result;
 };
 
-// Cells across t0 of a condition's run: chip-type conditions need at least the chip analysis' resolved
-// count (below it segments are particle roughness: at t0/5 the 5 and 75 m/s chip types came out swapped).
-int chip_cells_per_feed(int cells_per_feed) {
-  return std::max(cells_per_feed, static_cast<int>(std::ceil(ChipThresholds{}.resolved_cells_per_feed)));
-}
-int condition_cells_per_feed(const Condition& c, int cells_per_feed) {
-  return c.kind == "chip" ? chip_cells_per_feed(cells_per_feed) : cells_per_feed;
-}
-
-std::string case_text(const Condition& c, bool quick, int cells_per_feed) {
-  const double h = c.h_mm * 1e-3;
-  const double cell = quick ? 0.25 * h : h / condition_cells_per_feed(c, cells_per_feed);
-  // --quick: four cells of tool travel (pipeline check, numbers not meaningful); full: 0.4 mm, long enough
-  // for the preset's steady window (after >= 3 t0 of travel and 40 % of the cut).
-  const double cut = quick ? 4.0 * cell : std::max(0.4e-3, 6.0 * h);
-  std::string s;
-  s += fmt::format("title = \"validation {}: V = {:g} m/s ({:g} m/min), h = {:g} mm\"\n", c.id, c.speed_m_per_s,
-                   c.speed_m_per_s * 60.0, c.h_mm);
-  s += "[cutting]\n";
-  s += "material = \"ti64-cutting\"  # the calibrated set of the default case (materials/ti6al4v.toml)\n";
-  s += fmt::format("cutting_speed = {}\n", c.speed_m_per_s);
-  s += fmt::format("uncut_chip_thickness = {}\n", h);
-  s += "width_of_cut = 1e-3  # ASSUMPTION b = 1 mm: the width of cut is not in the Klippel data file\n";
-  s += fmt::format("cut_length = {}\n", cut);
-  s += "rake_angle_deg = 0.0       # ASSUMPTION: not in the data file\n";
-  s += "clearance_angle_deg = 11.0 # ASSUMPTION: not in the data file\n";
-  s += fmt::format("edge_radius = {}  # {}\n", c.edge_radius_um * 1e-6,
-                   c.kind == "forces" ? "measured mean r_n of the tests" : "preset default: not stated in the source");
-  s += "friction = 0.35            # ASSUMPTION: preset default Coulomb coefficient\n";
-  s += fmt::format("cell_size = {}\n", cell);
-  s += fmt::format("particles_per_cell = {}\n", quick ? 1 : 2);
-  s += fmt::format("snapshots = {}\n", quick ? 2 : 20);
+ConditionRunSettings run_settings(bool quick, int cells_per_feed) {
+  ConditionRunSettings s;
+  s.quick = quick;
+  s.cells_per_feed = cells_per_feed;
   return s;
 }
-
 
 std::string percent_error(std::optional<double> sim, double measured) {
   if (!sim || !std::isfinite(measured) || measured == 0.0) return "";
@@ -142,7 +94,7 @@ int run_validation(const ValidateOptions& o) {
   fs::create_directories(out / "logs");
 
   std::vector<Measured> measured;
-  for (const auto& r : read_data_csv(embedded_tool_file(kForcesFile)))
+  for (const auto& r : read_data_csv(embedded_tool_file(kForcesFile), kForcesFile))
     measured.push_back({num(r, "h_mm"), num(r, "vc_m_per_min"), num(r, "Fc_mean_N"), num(r, "Fc_min_N"),
                         num(r, "Fc_max_N"), num(r, "Ff_mean_N"), num(r, "Ff_min_N"), num(r, "Ff_max_N"),
                         num(r, "edge_radius_um"), static_cast<int>(num(r, "n_tests")), r.at("status")});
@@ -171,7 +123,7 @@ int run_validation(const ValidateOptions& o) {
     c.measured = m;
     conditions.push_back(c);
   }
-  const auto chip_rows = read_data_csv(embedded_tool_file(kChipFile));
+  const auto chip_rows = read_data_csv(embedded_tool_file(kChipFile), kChipFile);
   for (const auto& r : chip_rows) {
     const double v = num(r, "simulate_speed_m_per_s");
     if (!std::isfinite(v)) continue;
@@ -188,22 +140,22 @@ int run_validation(const ValidateOptions& o) {
   std::vector<ChildRun> runs;
   for (const Condition& c : conditions) {
     const fs::path case_file = out / "cases" / (c.id + ".toml");
-    write_file_atomically(case_file, [&](std::ostream& s) { s << case_text(c, o.quick, o.cells_per_feed); });
+    write_file_atomically(case_file, [&](std::ostream& s) { s << condition_case_text(c, run_settings(o.quick, o.cells_per_feed)); });
     ChildRun r;
     r.name = c.id;
-    r.args = {"run", case_file.string(), "--out", (out / c.id).string(), "--force", "--no-progress", "--threads",
+    r.args = {"run", case_file.string(), "--out", (out / c.id).string(), "--keep-complete", "--no-progress", "--threads",
               std::to_string(o.threads)};
     r.log_file = out / "logs" / (c.id + ".log");
     runs.push_back(r);
   }
   const int jobs = o.jobs > 0 ? o.jobs : std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / o.threads);
-  std::cout << fmt::format("mpmcut validate{}: {} runs, at most {} at a time, each with --threads {}; results in {}\n",
+  std::cout << fmt::format("mpmcut validate{}: {} runs, {}, each with --threads {}; results in {}\n",
                            o.quick ? " --quick (coarse: 4 cells/t0, 1 particle per cell, 4 cells of travel; checks "
                                      "the pipeline, the numbers are not converged)"
                                    : "",
-                           runs.size(), jobs, o.threads, out.string())
+                           runs.size(), concurrency_text(jobs), o.threads, out.string())
             << std::flush;
-  const bool completed = run_children(runs, jobs, true);
+  const bool completed = run_cases(runs, jobs, true);
   int failed = 0;
   for (std::size_t i = 0; i < conditions.size(); ++i) {
     conditions[i].result = read_case_result(out / conditions[i].id, runs[i].log_file, runs[i].exit_code);
@@ -387,7 +339,7 @@ void add_validate_command(CLI::App& app) {
   v->callback([o]() {
     int code = 0;
     try {
-      code = run_validation(*o);
+      code = run_study([&] { return run_validation(*o); });
     } catch (const std::exception& e) {
       std::cerr << "error: " << e.what() << "\n";
       code = 4;

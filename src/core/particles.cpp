@@ -21,6 +21,7 @@ std::size_t Particles::add(const Vec2& x, const Vec2& v, double mass_kg, double 
   plastic_displacement.push_back(0.0);
   initiation_yield_stress.push_back(0.0);
   fracture_energy.push_back(0.0);
+  damage_dissipation.push_back(0.0);
   body.push_back(body_id);
   material.push_back(material_id);
   return position.size() - 1;
@@ -53,6 +54,7 @@ void Particles::permute(const std::vector<std::size_t>& order) {
   apply_order(plastic_displacement, order);
   apply_order(initiation_yield_stress, order);
   apply_order(fracture_energy, order);
+  apply_order(damage_dissipation, order);
   apply_order(body, order);
   apply_order(material, order);
 }

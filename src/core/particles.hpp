@@ -32,6 +32,9 @@ struct Particles {
   std::vector<double> plastic_displacement; // u_pl after initiation, m
   std::vector<double> initiation_yield_stress;  // sigma_y0 at initiation, Pa
   std::vector<double> fracture_energy;          // G_f fixed at initiation (rate-dependent), J/m^2
+  // Damage dissipation of this particle since the start, J per m of thickness: divided by its
+  // fracture_energy it is the crack length (per m of thickness) its softening stands for.
+  std::vector<double> damage_dissipation;
   // Identity
   std::vector<std::int32_t> body;      // index into Scene::bodies
   std::vector<std::int32_t> material;  // index into the material list

@@ -52,6 +52,9 @@ struct MaterialParameters {
   bool damage_enabled = false;
   double jc_D1 = 0.0, jc_D2 = 0.0, jc_D3 = 0.0, jc_D4 = 0.0, jc_D5 = 0.0;
   double min_failure_strain = 0.01;  // clamp for eps_f, -
+  // No ductile fracture at or below this stress triaxiality eta = -p/q: neither initiation nor softening
+  // advance there (Bao & Wierzbicki 2005: -1/3). theory_materials.md §5.7.
+  double damage_triaxiality_cutoff = -1.0 / 3.0;
   // Hillerborg evolution after initiation
   DamageEvolution damage_evolution = DamageEvolution::Linear;
   double fracture_energy = 0.0;   // G_f, J/m^2 (or from K_IC); the low-rate value when rate-dependent
@@ -148,6 +151,9 @@ struct ThermalSpec {
   bool operator==(const ThermalSpec&) const = default;  // field-wise, for round-trip tests
 };
 
+// Largest mass scaling factor accepted (the step grows by sqrt(f): 1000x at most).
+inline constexpr double kMaxMassScalingFactor = 1e6;
+
 struct SolverSpec {
   ShapeFunctionKind shape_function = ShapeFunctionKind::UGimp;
   TimeScheme scheme = TimeScheme::MUSL;
@@ -162,6 +168,12 @@ struct SolverSpec {
   // Rigid contact acts at a node when the material's mass-weighted mean position there lies
   // closer to the rigid surface than this many cells (position check, no one-cell gap).
   double contact_distance_cells = 0.5;  // -
+  // Mass scaling (docs/mass_scaling.md): the deformable bodies' inertia is multiplied by a factor
+  // f >= 1, which lengthens the CFL step by sqrt(f). Heat capacity, conduction, the equation of
+  // state and all times stay physical. Either a fixed factor or a target time step (the factor
+  // is then chosen at the start so that the stable step reaches it); 1 and 0 = off.
+  double mass_scaling_factor = 1.0;            // f, -
+  double mass_scaling_target_time_step = 0.0;  // s; 0 = no target
 
   bool operator==(const SolverSpec&) const = default;  // field-wise, for round-trip tests
 };

@@ -41,9 +41,10 @@ Simulation::Simulation(const Scene& scene) : scene_(scene) {
   double max_density = 0.0;
   for (const auto& m : scene_.materials) max_density = std::max(max_density, m.density);
   // MPM3D's cut-off (1e-5 rho h^3 in 3D), per unit thickness here.
-  node_mass_cutoff_ = 1e-5 * max_density * grid_.h * grid_.h;
   build_particles();
   sort_particles_by_cell();
+  inertia_factor_ = resolve_mass_scaling();
+  node_mass_cutoff_ = 1e-5 * inertia_factor_ * max_density * grid_.h * grid_.h;
 
   // Boundary flags on the domain sides and on the padding beyond them.
   const int il = Grid::kPadding, ir = grid_.nx - 1 - Grid::kPadding;
@@ -98,6 +99,17 @@ void Simulation::build_particles() {
         particles_.add(x, body.velocity, rho * d * d, d * d, body.temperature, static_cast<int>(b), mat);
       }
   }
+}
+
+// Mass scaling (docs/mass_scaling.md): a fixed factor, or the one that brings the initial
+// stable step up to the target, dt_cfl ~ sqrt(f) (f = (target / dt_cfl(f = 1))^2, never below 1).
+double Simulation::resolve_mass_scaling() {
+  const SolverSpec& s = scene_.solver;
+  if (s.mass_scaling_target_time_step <= 0.0) return std::max(1.0, s.mass_scaling_factor);
+  inertia_factor_ = 1.0;
+  const double dt0 = mechanical_time_step();
+  const double ratio = s.mass_scaling_target_time_step / dt0;
+  return std::max(1.0, ratio * ratio);
 }
 
 // Physically reorders particles by cell (row-major) so neighbours in space are neighbours in
@@ -191,7 +203,7 @@ void Simulation::push_particles_out_of_rigid_bodies(double dt) {
       position_new_[p] -= (d - 1e-9 * grid_.h) * normal;  // onto the surface, a hair outside
       const double vn = (P.velocity[p] - vr).dot(normal);
       if (vn < 0.0) {
-        const Vec2 dp = -P.mass[p] * vn * normal;
+        const Vec2 dp = -inertia_factor_ * P.mass[p] * vn * normal;
         P.velocity[p] -= vn * normal;
         impulse += dp;
         work += dp.dot(vr);
@@ -267,6 +279,15 @@ void Simulation::remove_escaped_particles() {
 
 double Simulation::stable_time_step() const {
   if (scene_.solver.fixed_time_step > 0.0) return scene_.solver.fixed_time_step;
+  double dt = mechanical_time_step();
+  // Explicit conduction: dt <= h^2/(4 alpha) in 2D, with the same CFL safety factor.
+  if (scene_.thermal.conduction) dt = std::min(dt, conduction_limit_);
+  return dt;
+}
+
+// CFL limit of the momentum equation: cfl h / (c + |v|), where mass scaling slows the waves to
+// c / sqrt(f) (the stiffness is physical, the inertia f times larger).
+double Simulation::mechanical_time_step() const {
   const std::size_t n = particles_.size();
   double c_max = 0.0, v_max = 0.0;
 #pragma omp parallel for reduction(max : c_max, v_max) schedule(static) if (parallel_)
@@ -275,10 +296,7 @@ double Simulation::stable_time_step() const {
     v_max = std::max(v_max, particles_.velocity[p].norm());
   }
   for (const auto& r : rigid_) v_max = std::max(v_max, r.velocity.norm());
-  double dt = scene_.solver.cfl * grid_.h / (c_max + v_max);
-  // Explicit conduction: dt <= h^2/(4 alpha) in 2D, with the same CFL safety factor.
-  if (scene_.thermal.conduction) dt = std::min(dt, conduction_limit_);
-  return dt;
+  return scene_.solver.cfl * grid_.h / (c_max / std::sqrt(inertia_factor_) + v_max);
 }
 
 // Groups particles by strips of kStripRows grid rows (counting sort, stable in particle order).
@@ -341,11 +359,12 @@ void Simulation::particles_to_grid() {
     Stencil st;
     const Vec2 u = cell_units(P.position[p]);
     shape_of(p).evaluate(u.x(), u.y(), st);
-    const double m = P.mass[p];
+    const double m = inertia_factor_ * P.mass[p];  // inertial (scaled) mass
     const Vec2 mv = m * P.velocity[p];
     const Mat2 sigma = P.stress[p].in_plane();
     const double V = P.volume[p];
-    const double mc = heat_capacity ? m * scene_.materials[P.material[p]].specific_heat : 0.0;
+    // Heat capacity from the true mass: mass scaling changes inertia only.
+    const double mc = heat_capacity ? P.mass[p] * scene_.materials[P.material[p]].specific_heat : 0.0;
     for (int a = 0; a < 3; ++a)
       for (int c = 0; c < 3; ++c) {
         const double w = st.w[a][c];
@@ -545,7 +564,7 @@ void Simulation::remap_momentum_musl() {
     Stencil st;
     const Vec2 u = cell_units(P.position[p]);
     shape_of(p).evaluate(u.x(), u.y(), st);
-    const Vec2 mv = P.mass[p] * P.velocity[p];
+    const Vec2 mv = inertia_factor_ * P.mass[p] * P.velocity[p];
     for (int a = 0; a < 3; ++a)
       for (int c = 0; c < 3; ++c)
         if (st.w[a][c] != 0.0) G.momentum[G.index(st.i0 + a, st.j0 + c)] += st.w[a][c] * mv;
@@ -566,6 +585,7 @@ void Simulation::update_particle_stress(double dt) {
   StepContext ctx;
   ctx.dt = dt;
   ctx.cell_size = G.h;
+  ctx.inertia_factor = inertia_factor_;
 #pragma omp parallel for schedule(static) if (parallel_)
   for (std::size_t p = 0; p < n; ++p) {
     Stencil st;
@@ -643,8 +663,9 @@ void Simulation::conduct_heat(double dt) {
 
 Vec2 Simulation::total_momentum() const {
   const std::size_t n = particles_.size();
-  return {deterministic_sum(n, [&](std::size_t p) { return particles_.mass[p] * particles_.velocity[p].x(); }),
-          deterministic_sum(n, [&](std::size_t p) { return particles_.mass[p] * particles_.velocity[p].y(); })};
+  const double f = inertia_factor_;
+  return {deterministic_sum(n, [&](std::size_t p) { return f * particles_.mass[p] * particles_.velocity[p].x(); }),
+          deterministic_sum(n, [&](std::size_t p) { return f * particles_.mass[p] * particles_.velocity[p].y(); })};
 }
 
 double Simulation::max_temperature() const {
@@ -655,8 +676,9 @@ double Simulation::max_temperature() const {
 
 void Simulation::refresh_energy() {
   const std::size_t n = particles_.size();
+  const double f = inertia_factor_;  // the kinetic energy of the (scaled) inertia that is integrated
   energy_.kinetic =
-      deterministic_sum(n, [&](std::size_t p) { return 0.5 * particles_.mass[p] * particles_.velocity[p].squaredNorm(); });
+      deterministic_sum(n, [&](std::size_t p) { return 0.5 * f * particles_.mass[p] * particles_.velocity[p].squaredNorm(); });
   energy_.elastic = deterministic_sum(
       n, [&](std::size_t p) { return materials_[particles_.material[p]]->elastic_energy(particles_, p); });
 }

@@ -83,6 +83,8 @@ class Simulation {
 
   // Time step the next step() will take: CFL limit, capped so the run ends at end_time.
   double stable_time_step() const;
+  // Mass scaling factor of the deformable bodies' inertia in use (1 = none); see SolverSpec.
+  double mass_scaling_factor() const { return inertia_factor_; }
   Vec2 total_momentum() const;  // kg m/s per m
   double max_temperature() const;
   long removed_particles() const { return removed_particles_; }
@@ -99,6 +101,8 @@ class Simulation {
 
  private:
   void build_particles();
+  double resolve_mass_scaling();
+  double mechanical_time_step() const;
   void particles_to_grid();
   void apply_grid_boundary_conditions(bool momentum_only);
   void update_grid_momentum(double dt);
@@ -128,6 +132,7 @@ class Simulation {
   std::vector<ShapeFunction> shapes_;  // one per body (uGIMP lp depends on its particles per cell)
   std::vector<RigidPolygon> rigid_geometry_;  // outlines at t = 0; current = outline + displacement
   double node_mass_cutoff_ = 0.0;             // nodes lighter than this count as empty, kg/m
+  double inertia_factor_ = 1.0;               // mass scaling f: inertial mass = f x mass
   bool has_friction_ = false;                 // some rigid body has mu > 0: frictional heating
   // Conduction sub-cycling (restart state: conduction_elapsed_, steps_since_conduction_)
   static constexpr int conduction_substeps_ = 16;

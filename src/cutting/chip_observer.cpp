@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis/chip_analysis.hpp"
+#include "analysis/fracture_accounting.hpp"
 #include "core/simulation.hpp"
 
 namespace mpmcut {
@@ -15,13 +16,21 @@ void ChipObserver::at_finish(const Simulation& sim, nlohmann::json& summary) {
   // Also at the end of a failed or interrupted run: the state up to there is what the user has.
   // The analysis must never cost the run its summary, so a failure here becomes a note.
   try {
-    const ChipAnalysis a =
-        analyze_chip(sim.particles(), chip_analysis_setup(scene_, sim.rigid_bodies().at(0).displacement, sim.time()));
+    const ChipAnalysisSetup setup = chip_analysis_setup(scene_, sim.rigid_bodies().at(0).displacement, sim.time());
+    const ChipAnalysis a = analyze_chip(sim.particles(), setup);
     nlohmann::json chip = chip_json(a), temperature = temperature_json(a);
     chip["source"] = "final state of the run";
     temperature["source"] = "final state of the run";
     summary["chip"] = chip;
     summary["temperature"] = temperature;
+    // Does the fracture work correspond to real new surface? (docs/analysis.md, "Fracture accounting")
+    const EnergyTotals& e = sim.energy();
+    const FractureAccounting f = account_fracture(sim.particles(), setup, a, e.damage_dissipation);
+    const EnergyPartition part = energy_partition(sim.rigid_bodies().at(0).work, e.plastic_work, e.damage_dissipation,
+                                                  e.friction, e.kinetic, e.elastic, e.viscous);
+    nlohmann::json fracture = fracture_json(f, part);
+    fracture["source"] = "final state of the run";
+    summary["fracture"] = fracture;
   } catch (const std::exception& e) {
     summary["chip"] = {{"error", e.what()}};
   }

@@ -25,6 +25,11 @@ struct CuttingParameters {
   bool conduction = true;            // heat conduction in the workpiece
   double chip_room = 0.0;            // free space above the workpiece for the chip, m; 0 = automatic
   int snapshots = 20;                // VTU snapshots over the cut
+  // Mass scaling of the workpiece's inertia (docs/mass_scaling.md): 0 = automatic (the factor that
+  // brings the inertia number rho f V^2 / A up to mass_scaling_inertia_number, 1 above the speed
+  // where that is already reached), else the factor itself (1 = off).
+  double mass_scaling = 0.0;                  // f, -
+  double mass_scaling_inertia_number = 2e-3;  // target of the automatic factor, -
   double steady_start_fraction = 0.4;// steady window starts after this fraction of the cut (and after min(3 t0, 0.6 cut))
 
   bool operator==(const CuttingParameters&) const = default;

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "cutting/mass_scaling.hpp"
 #include "cutting/tool_geometry.hpp"
 
 namespace mpmcut {
@@ -71,6 +72,7 @@ Scene build_cutting_scene(const CuttingParameters& c, const MaterialParameters& 
   s.solver.flip_fraction = 0.99;
   s.solver.end_time = c.cut_length / c.cutting_speed;
   s.solver.remove_escaping_particles = true;
+  s.solver.mass_scaling_factor = cutting_mass_scaling_factor(c, material);
   s.output.snapshot_interval = s.solver.end_time / std::max(1, c.snapshots);
   // Force rows every quarter cell of tool travel: fine enough to resolve chip segmentation.
   s.output.history_interval = 0.25 * h / c.cutting_speed;

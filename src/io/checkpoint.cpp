@@ -36,7 +36,7 @@ struct ParticlesLayout {
   std::vector<Mat2> c, d;
   std::vector<double> e, f, g;
   std::vector<PlaneStrainTensor> h, i;
-  std::vector<double> j, k, l, m, n, o, p, s;
+  std::vector<double> j, k, l, m, n, o, p, s, t;
   std::vector<std::int32_t> q, r;
 };
 static_assert(sizeof(Particles) == sizeof(ParticlesLayout),
@@ -76,6 +76,7 @@ void for_each_particle_array(P& p, F&& f) {
   f("plastic_displacement", p.plastic_displacement);
   f("initiation_yield_stress", p.initiation_yield_stress);
   f("fracture_energy", p.fracture_energy);
+  f("damage_dissipation", p.damage_dissipation);
   f("body", p.body);
   f("material", p.material);
 }

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "core/scene.hpp"
+
 namespace mpmcut {
 
 CuttingParameters read_cutting_parameters(TableReader& t) {
@@ -48,6 +50,21 @@ CuttingParameters read_cutting_parameters(TableReader& t) {
   c.conduction = t.boolean("conduction", c.conduction);
   c.chip_room = t.number("chip_room", c.chip_room, Range::closed(0.0, 1.0, "m", "0 = automatic"));
   c.snapshots = static_cast<int>(t.integer("snapshots", c.snapshots, Range::closed(1, 10000)));
+  if (const toml::node* n = t.node("mass_scaling")) {
+    if (auto word = n->value_exact<std::string>()) {
+      if (*word == "auto") c.mass_scaling = 0.0;
+      else if (*word == "off") c.mass_scaling = 1.0;
+      else t.fail("mass_scaling", "must be \"auto\", \"off\" or a factor in [1, 1e6], got \"" + *word + "\"");
+    } else {
+      c.mass_scaling = t.number("mass_scaling", 0.0);
+      t.check("mass_scaling", c.mass_scaling >= 1.0 && c.mass_scaling <= kMaxMassScalingFactor,
+              "\"auto\", \"off\" or a factor in [1, 1e6]", c.mass_scaling);
+    }
+  }
+  c.mass_scaling_inertia_number = t.number("mass_scaling_inertia_number", c.mass_scaling_inertia_number);
+  t.check("mass_scaling_inertia_number", c.mass_scaling_inertia_number > 0.0 && c.mass_scaling_inertia_number <= 0.1,
+          "in (0, 0.1] (rho f V^2 / A; 2e-3 keeps inertia forces near 0.2 % of the flow stress)",
+          c.mass_scaling_inertia_number);
   c.steady_start_fraction = t.number("steady_start_fraction", c.steady_start_fraction, Range::closed_open(0.0, 1.0));
   t.reject_unknown_keys();
   return c;
@@ -75,6 +92,9 @@ void write_cutting_parameters(const CuttingParameters& c, std::ostream& out, std
   out << "conduction = " << (c.conduction ? "true" : "false") << "\n";
   out << "chip_room = " << num(c.chip_room) << "  # m (0 = automatic)\n";
   out << "snapshots = " << c.snapshots << "\n";
+  if (c.mass_scaling == 0.0) out << "mass_scaling = \"auto\"\n";
+  else out << "mass_scaling = " << num(c.mass_scaling) << "\n";
+  out << "mass_scaling_inertia_number = " << num(c.mass_scaling_inertia_number) << "\n";
   out << "steady_start_fraction = " << num(c.steady_start_fraction) << "\n";
 }
 

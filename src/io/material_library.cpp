@@ -63,6 +63,7 @@ void validate_material(TableReader& t, const MaterialParameters& m) {
   for (const auto& [key, value] : {std::pair{"jc_D1", m.jc_D1}, {"jc_D2", m.jc_D2}, {"jc_D3", m.jc_D3},
                                    {"jc_D4", m.jc_D4}, {"jc_D5", m.jc_D5}})
     t.check(key, value, Range::closed(-100.0, 100.0));
+  t.check("damage_triaxiality_cutoff", m.damage_triaxiality_cutoff, Range::closed(-100.0, 100.0));
   if (!m.damage_enabled) check_model_key("min_failure_strain", m.min_failure_strain, false, Range::open_closed(0.0, 100.0));
   if (m.damage_enabled) {
     // Damage is driven by plastic strain, which an elastic material never has.
@@ -139,6 +140,7 @@ MaterialParameters read_material(TableReader& t, const MaterialLibrary& library)
   m.jc_D4 = t.number("jc_D4", m.jc_D4);
   m.jc_D5 = t.number("jc_D5", m.jc_D5);
   m.min_failure_strain = t.number("min_failure_strain", m.min_failure_strain);
+  m.damage_triaxiality_cutoff = t.number("damage_triaxiality_cutoff", m.damage_triaxiality_cutoff);
   m.damage_evolution = t.choice<DamageEvolution>(
       "damage_evolution", {{"linear", DamageEvolution::Linear}, {"exponential", DamageEvolution::Exponential}},
       m.damage_evolution);

@@ -249,6 +249,17 @@ SolverSpec read_solver(TableReader t, SolverSpec s = {}) {
       t.number("fixed_time_step", s.fixed_time_step, Range::closed(0.0, 1.0, "s", "0 = from the CFL condition"));
   s.remove_escaping_particles = t.boolean("remove_escaping_particles", s.remove_escaping_particles);
   s.contact_distance_cells = t.number("contact_distance_cells", s.contact_distance_cells, Range::closed(0.0, 10.0, "cells"));
+  s.mass_scaling_factor = t.number("mass_scaling_factor", s.mass_scaling_factor);
+  t.check("mass_scaling_factor", s.mass_scaling_factor >= 1.0 && s.mass_scaling_factor <= kMaxMassScalingFactor,
+          fmt::format("in [1, {:g}] (1 = no mass scaling)", kMaxMassScalingFactor), s.mass_scaling_factor);
+  s.mass_scaling_target_time_step = t.number("mass_scaling_target_time_step", s.mass_scaling_target_time_step);
+  t.check("mass_scaling_target_time_step",
+          s.mass_scaling_target_time_step >= 0.0 && s.mass_scaling_target_time_step < 1.0,
+          "in [0, 1) s (0 = no target)", s.mass_scaling_target_time_step);
+  if (s.mass_scaling_target_time_step > 0.0 && t.has("mass_scaling_factor") && s.mass_scaling_factor > 1.0)
+    t.fail("mass_scaling_target_time_step", "give either mass_scaling_factor or mass_scaling_target_time_step, not both");
+  if (s.mass_scaling_target_time_step > 0.0 && s.fixed_time_step > 0.0)
+    t.fail("mass_scaling_target_time_step", "has no meaning with a fixed_time_step; give one of them");
   t.reject_unknown_keys();
   return s;
 }

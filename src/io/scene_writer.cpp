@@ -50,6 +50,21 @@ const char* name(BoundaryKind b) {
   return "?";
 }
 
+
+std::string shape_line(const Shape& s) {
+  switch (s.kind) {
+    case ShapeKind::Rectangle:
+      return "rectangle = { min = " + vec(s.rectangle.min) + ", max = " + vec(s.rectangle.max) + " }";
+    case ShapeKind::Disk:
+      return "disk = { center = " + vec(s.disk.center) + ", radius = " + num(s.disk.radius) + " }";
+    case ShapeKind::Polygon:
+      return "polygon = " + points(s.polygon.vertices);
+  }
+  return "";
+}
+
+}  // namespace
+
 void write_material(const MaterialParameters& m, std::ostream& out) {
   auto line = [&](const char* key, double value) { out << key << " = " << num(value) << "\n"; };
   out << "\n[[material]]\n";
@@ -84,6 +99,7 @@ void write_material(const MaterialParameters& m, std::ostream& out) {
   line("jc_D4", m.jc_D4);
   line("jc_D5", m.jc_D5);
   line("min_failure_strain", m.min_failure_strain);
+  line("damage_triaxiality_cutoff", m.damage_triaxiality_cutoff);
   out << "damage_evolution = \"" << (m.damage_evolution == DamageEvolution::Exponential ? "exponential" : "linear")
       << "\"\n";
   line("fracture_energy", m.fracture_energy);
@@ -92,20 +108,6 @@ void write_material(const MaterialParameters& m, std::ostream& out) {
   line("fracture_transition_exponent", m.fracture_transition_exponent);
   line("max_damage", m.max_damage);
 }
-
-std::string shape_line(const Shape& s) {
-  switch (s.kind) {
-    case ShapeKind::Rectangle:
-      return "rectangle = { min = " + vec(s.rectangle.min) + ", max = " + vec(s.rectangle.max) + " }";
-    case ShapeKind::Disk:
-      return "disk = { center = " + vec(s.disk.center) + ", radius = " + num(s.disk.radius) + " }";
-    case ShapeKind::Polygon:
-      return "polygon = " + points(s.polygon.vertices);
-  }
-  return "";
-}
-
-}  // namespace
 
 void write_scene(const Scene& s, std::ostream& out) {
   out << "# Complete mpmcut case: every key explicit (docs/input.md).\n";
@@ -133,6 +135,8 @@ void write_scene(const Scene& s, std::ostream& out) {
   out << "fixed_time_step = " << num(s.solver.fixed_time_step) << "\n";
   out << "remove_escaping_particles = " << (s.solver.remove_escaping_particles ? "true" : "false") << "\n";
   out << "contact_distance_cells = " << num(s.solver.contact_distance_cells) << "\n";
+  out << "mass_scaling_factor = " << num(s.solver.mass_scaling_factor) << "\n";
+  out << "mass_scaling_target_time_step = " << num(s.solver.mass_scaling_target_time_step) << "\n";
 
   out << "\n[output]\n";
   out << "snapshot_interval = " << num(s.output.snapshot_interval) << "\n";

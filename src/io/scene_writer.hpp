@@ -10,4 +10,7 @@ namespace mpmcut {
 
 void write_scene(const Scene& scene, std::ostream& out);
 
+// One [[material]] table with every parameter explicit (as in write_scene).
+void write_material(const MaterialParameters& m, std::ostream& out);
+
 }  // namespace mpmcut

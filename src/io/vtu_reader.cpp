@@ -72,6 +72,9 @@ class Reader {
                                          file_.string(), what));
   }
 
+  // Whether the file has an array of this name.
+  bool has(const std::string& name) const { return arrays_.count(name) > 0; }
+
  private:
   // The value of attribute `key` in the tag text `tag`, or "" when absent.
   static std::string attribute(std::string_view tag, std::string_view key) {
@@ -190,6 +193,12 @@ VtuSnapshot read_particles_vtu(const std::filesystem::path& file) {
   scalar(r, "damage", p.damage);
   scalar(r, "plastic_displacement_m", p.plastic_displacement);
   scalar(r, "fracture_energy_J_per_m2", p.fracture_energy);
+  // Snapshots written before this field existed: zeros (the run's ledger still has the total).
+  if (r.has("damage_dissipation_J_per_m")) {
+    scalar(r, "damage_dissipation_J_per_m", p.damage_dissipation);
+  } else {
+    p.damage_dissipation.assign(n, 0.0);
+  }
   p.body = r.array<std::int32_t>("body_id", "Int32", 1, n);
   p.material = r.array<std::int32_t>("material_id", "Int32", 1, n);
 

@@ -12,7 +12,8 @@
 //   position <- Points (x, y; z dropped)          velocity <- velocity_m_per_s (x, y)
 //   stress, effective_stress <- xx yy zz xy        mass, volume, plastic_strain, plastic_strain_rate,
 //   velocity_gradient <- the in-plane 2x2 of L     temperature, damage_initiation, damage,
-//   body, material <- body_id, material_id          plastic_displacement, fracture_energy <- their arrays
+//   body, material <- body_id, material_id          plastic_displacement, fracture_energy,
+//                                                  damage_dissipation <- their arrays
 // all bit-exact. Not stored in the file, so reconstructed:
 //   deformation_gradient = sqrt(J) I (only J = det F is stored; det F round-trips, F itself does not)
 //   initial_volume = volume / J;  initiation_yield_stress = 0.

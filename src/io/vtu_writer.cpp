@@ -69,6 +69,9 @@ const std::vector<Field>& fields() {
        [](const Particles& p, std::size_t i, double* o) { o[0] = p.plastic_displacement[i]; }},
       {{"fracture_energy_J_per_m2", 1, false, "G_f fixed at damage initiation (0 before)"},
        [](const Particles& p, std::size_t i, double* o) { o[0] = p.fracture_energy[i]; }},
+      {{"damage_dissipation_J_per_m", 1, false,
+        "damage dissipation of the particle since the start (per m of thickness); / G_f = its crack length"},
+       [](const Particles& p, std::size_t i, double* o) { o[0] = p.damage_dissipation[i]; }},
       {{"deformation_jacobian_J", 1, false, "J = det F, current over initial volume"},
        [](const Particles& p, std::size_t i, double* o) {
          o[0] = p.deformation_gradient[i].determinant();  // F_zz = 1 in plane strain

@@ -15,6 +15,7 @@ JohnsonCookDamage::JohnsonCookDamage(const MaterialParameters& p)
       D4_(p.jc_D4),
       D5_(p.jc_D5),
       min_failure_strain_(p.min_failure_strain),
+      triaxiality_cutoff_(p.damage_triaxiality_cutoff),
       evolution_(p.damage_evolution),
       fracture_energy_(p.fracture_energy),
       brittle_fracture_energy_(p.fracture_energy_brittle),

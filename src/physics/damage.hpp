@@ -45,6 +45,9 @@ class JohnsonCookDamage {
 
   bool enabled() const { return enabled_; }
   double max_damage() const { return max_damage_; }
+  // Ductile fracture (initiation and softening by plastic flow) needs eta above the cut-off
+  // (Bao & Wierzbicki 2005; theory_materials.md §5.7).
+  bool fracture_possible(double triaxiality) const { return triaxiality > triaxiality_cutoff_; }
   bool failed(double damage) const { return enabled_ && damage >= max_damage_; }
 
   // JC failure strain. log_rate_ratio = max(ln(epsdot/epsdot0), 0), homologous_temperature in [0, 1].
@@ -78,6 +81,7 @@ class JohnsonCookDamage {
   bool enabled_;
   double D1_, D2_, D3_, D4_, D5_;
   double min_failure_strain_;
+  double triaxiality_cutoff_;
   DamageEvolution evolution_;
   double fracture_energy_;          // G_f (low-rate value when rate-dependent), J/m^2
   double brittle_fracture_energy_;  // G_b, J/m^2

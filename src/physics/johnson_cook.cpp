@@ -137,7 +137,8 @@ ConstitutiveIncrement JohnsonCookMaterial::update(Particles& p, std::size_t i, c
   double viscous_pressure = 0.0;
   if (eos_.has_bulk_viscosity() && ev < 0.0) {
     const double c = std::sqrt((eos_.bulk_modulus(density) + 4.0 / 3.0 * G_) / density);
-    viscous_pressure = eos_.bulk_viscosity(density, ev / dt, ctx.cell_size, c);
+    const double f = ctx.inertia_factor;  // mass scaling: damp the dynamics that are integrated
+    viscous_pressure = eos_.bulk_viscosity(f * density, ev / dt, ctx.cell_size, c / std::sqrt(f));
     inc.viscous_dissipation = viscous_pressure * (-ev) * volume;
   }
 
@@ -174,11 +175,14 @@ ConstitutiveIncrement JohnsonCookMaterial::update(Particles& p, std::size_t i, c
     // thickens normal to the crack only, so L J is its current thickness and L J d(eps) its opening;
     // then each particle dissipates G_f V0/L whatever its stretch. In shear bands J ~ 1.
     const double band_length = ctx.cell_size * volume / p.initial_volume[i];
-    if (dep > 0.0) {
+    // Plastic flow at a triaxiality at or below the cut-off (compression) neither advances initiation
+    // nor softens: it is plastic work (theory_materials.md §5.7).
+    const double eta = stress_triaxiality(pressure, q);
+    if (dep > 0.0 && damage_.fracture_possible(eta)) {
       double eps_f = 0.0;
       if (st.initiation < 1.0) {
         if (!log_rate_known) log_rate = flow_.log_rate_ratio(rate);
-        eps_f = damage_.failure_strain(stress_triaxiality(pressure, q), log_rate, flow_.homologous_temperature(T));
+        eps_f = damage_.failure_strain(eta, log_rate, flow_.homologous_temperature(T));
       }
       const DamageStep ds = damage_.advance(st, dep, eps_f, q, band_length, rate);
       before = ds.strain_before_initiation;
@@ -213,6 +217,9 @@ ConstitutiveIncrement JohnsonCookMaterial::update(Particles& p, std::size_t i, c
     inc.damage_dissipation += Y * ((failed ? 1.0 : D) - D0) * volume;
   }
   if (failed) s = {};
+  // Per particle, so that the crack length it stands for, damage_dissipation / G_f, can be summed
+  // with each particle's own G_f (rate-dependent, theory_materials.md §5.6).
+  if (inc.damage_dissipation != 0.0) p.damage_dissipation[i] += inc.damage_dissipation;
 
   // 8. Store the state: undamaged stress (no viscosity) for the next step, degraded stress for forces.
   p.effective_stress[i] = s.plus_identity(-pressure);

@@ -21,6 +21,9 @@ struct ConstitutiveIncrement {
 struct StepContext {
   double dt = 0.0;         // s
   double cell_size = 0.0;  // h, m: the Hillerborg characteristic length
+  // Mass scaling factor f of the inertia (>= 1): the artificial bulk viscosity damps the scaled
+  // dynamics, so it sees the scaled density f rho and wave speed c / sqrt(f).
+  double inertia_factor = 1.0;  // -
 };
 
 class Material {

@@ -7,81 +7,11 @@
 #include <cstdio>
 #include <numbers>
 
-#include "contact/rigid_polygon.hpp"
-#include "core/simulation.hpp"
-#include "cutting/cutting_scene.hpp"
-#include "io/material_library.hpp"
+#include "../support/short_cut.hpp"
 #include "physics/flow_stress.hpp"
 
 using namespace mpmcut;
-
-namespace {
-
-CuttingParameters coarse_cut(double speed, double cut_length) {
-  CuttingParameters c;
-  c.material = "ti64-johnson-1985";
-  c.cutting_speed = speed;
-  c.uncut_chip_thickness = 0.1e-3;
-  c.cut_length = cut_length;
-  c.rake_angle_deg = 0.0;
-  c.clearance_angle_deg = 11.0;
-  c.edge_radius = 5e-6;
-  c.friction = 0.35;
-  c.cell_size = 20e-6;  // t0/5: coarse, enough for the global balance and force level
-  c.particles_per_cell = 2;
-  return c;
-}
-
-const MaterialParameters& ti64() { return *builtin_material_library().find("ti64-johnson-1985"); }
-
-struct CutResult {
-  double mean_cutting_force_N_per_m = 0.0;
-  double mean_thrust_force_N_per_m = 0.0;
-  double deepest_penetration_m = 0.0;  // most negative signed distance of a particle to the tool
-  double chip_rise_m = 0.0;            // highest particle above the workpiece's top surface
-  double balance_error = 0.0;          // (material side - tool work) / tool work
-  double balance_error_without_algorithmic = 0.0;
-  bool finite = true;
-};
-
-CutResult run_cut(const CuttingParameters& c) {
-  const Scene scene = build_cutting_scene(c, ti64());
-  Simulation sim(scene);
-  const RigidBodySpec& tool_spec = scene.rigid_bodies[0];
-  const RigidPolygon tool(tool_spec.polygon, tool_spec.rounding_radius);
-  const double top = scene.bodies[0].shape.rectangle.max.y();
-  const double steady_start = steady_window_start_travel(c) / c.cutting_speed;
-  CutResult r;
-  Vec2 impulse_at_start = Vec2::Zero();
-  double t_start = -1.0;
-  while (sim.time() < scene.solver.end_time * (1 - 1e-12)) {
-    sim.step(scene.solver.end_time - sim.time());
-    if (t_start < 0 && sim.time() >= steady_start) {
-      t_start = sim.time();
-      impulse_at_start = sim.rigid_bodies()[0].impulse;
-    }
-    const Vec2 shift = sim.rigid_bodies()[0].displacement;
-    for (const Vec2& x : sim.particles().position) {
-      Vec2 n;
-      r.deepest_penetration_m = std::min(r.deepest_penetration_m, tool.signed_distance(x - shift, n));
-      r.chip_rise_m = std::max(r.chip_rise_m, x.y() - top);
-    }
-    r.finite = r.finite && std::isfinite(sim.rigid_bodies()[0].force.norm());
-  }
-  const Vec2 mean = (sim.rigid_bodies()[0].impulse - impulse_at_start) / (sim.time() - t_start);
-  r.mean_cutting_force_N_per_m = mean.x();
-  r.mean_thrust_force_N_per_m = mean.y();
-  sim.refresh_energy();
-  const EnergyTotals& e = sim.energy();
-  // Every term of the ledger, the algorithmic ones included (FLIP/PIC blend, contact safeguard,
-  // removed particles): the residual is what no term accounts for.
-  r.balance_error = energy_balance_residual(e) / e.external_work;
-  r.balance_error_without_algorithmic =
-      (energy_balance_residual(e) - e.transfer_dissipation - e.contact_safeguard - e.removed_energy) / e.external_work;
-  return r;
-}
-
-}  // namespace
+using namespace mpmcut::testing;
 
 TEST(ShortCut, ChipFormsNoPenetrationPositiveForcesEnergyCloses) {
   const CuttingParameters c = coarse_cut(20.0, 0.12e-3);

@@ -28,6 +28,7 @@ EXPECTED_POINT_FIELDS = {
     "damage": 1,
     "plastic_displacement_m": 1,
     "fracture_energy_J_per_m2": 1,
+    "damage_dissipation_J_per_m": 1,
     "deformation_jacobian_J": 1,
     "velocity_gradient_per_s": 9,
 }

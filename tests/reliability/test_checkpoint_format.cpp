@@ -65,7 +65,8 @@ bool same_state(const Simulation& a, const Simulation& b) {
               same_bytes(p.temperature, q.temperature) && same_bytes(p.damage_initiation, q.damage_initiation) &&
               same_bytes(p.damage, q.damage) && same_bytes(p.plastic_displacement, q.plastic_displacement) &&
               same_bytes(p.initiation_yield_stress, q.initiation_yield_stress) &&
-              same_bytes(p.fracture_energy, q.fracture_energy) && same_bytes(p.body, q.body) &&
+              same_bytes(p.fracture_energy, q.fracture_energy) &&
+              same_bytes(p.damage_dissipation, q.damage_dissipation) && same_bytes(p.body, q.body) &&
               same_bytes(p.material, q.material);
   same = same && std::memcmp(&a.energy(), &b.energy(), sizeof(EnergyTotals)) == 0;
   same = same && a.time() == b.time() && a.step_count() == b.step_count() && a.last_dt() == b.last_dt();

@@ -46,6 +46,7 @@ Particles sample(int n) {
     p.damage[i] = 0.01 * i * u;
     p.plastic_displacement[i] = 1e-7 * u;
     p.fracture_energy[i] = 1.5e4 * u;
+    p.damage_dissipation[i] = 2e-3 * u;
     p.deformation_gradient[i] << 1.0 + 0.1 * u, 0.02, 0.0, 1.0 - 0.03 * u;
     p.volume[i] = p.initial_volume[i] * p.deformation_gradient[i].determinant();
     p.velocity_gradient[i] << 1.0 * u, 2.0, 3.0 + u, 4.0 + i;
@@ -66,7 +67,7 @@ TEST_F(VtuReader, RoundTripsEveryFieldBitExact) {
                         q.volume.size(), q.initial_volume.size(), q.stress.size(), q.effective_stress.size(),
                         q.plastic_strain.size(), q.plastic_strain_rate.size(), q.temperature.size(),
                         q.damage_initiation.size(), q.damage.size(), q.plastic_displacement.size(),
-                        q.initiation_yield_stress.size(), q.fracture_energy.size(), q.body.size(),
+                        q.initiation_yield_stress.size(), q.fracture_energy.size(), q.damage_dissipation.size(), q.body.size(),
                         q.material.size()})
     EXPECT_EQ(n, p.size());
   for (std::size_t i = 0; i < p.size(); ++i) {
@@ -90,6 +91,7 @@ TEST_F(VtuReader, RoundTripsEveryFieldBitExact) {
     EXPECT_TRUE(same_bits(q.damage[i], p.damage[i]));
     EXPECT_TRUE(same_bits(q.plastic_displacement[i], p.plastic_displacement[i]));
     EXPECT_TRUE(same_bits(q.fracture_energy[i], p.fracture_energy[i]));
+    EXPECT_TRUE(same_bits(q.damage_dissipation[i], p.damage_dissipation[i]));
     EXPECT_EQ(q.body[i], p.body[i]);
     EXPECT_EQ(q.material[i], p.material[i]);
     // Only det F is stored: F comes back as sqrt(J) I, V0 as V / J.

@@ -29,6 +29,7 @@
 #include <string>
 
 #include "../support/scene_builders.hpp"
+#include "analysis/fracture_accounting.hpp"
 #include "core/simulation.hpp"
 
 using namespace mpmcut;
@@ -68,6 +69,9 @@ struct BandResult {
   double dissipation_per_area = 0.0;  // J/m^2
   bool band_failed = false;           // every particle of the layer reached D_max
   double time = 0.0;
+  double equivalent_crack_length = 0.0;  // m: sum of each particle's damage dissipation / its G_f
+  double ledger_dissipation = 0.0;       // J/m: the energy ledger's damage dissipation
+  double particle_dissipation = 0.0;     // J/m: the sum of the particles' own tallies
 };
 
 enum class Mode { Shear, Opening };  // mode II (driver slides along x) or mode I (driver pulls along y)
@@ -86,6 +90,9 @@ BandResult run_to_failure(Simulation& sim, const std::function<bool(std::size_t)
   }
   r.dissipation_per_area = sim.energy().damage_dissipation / crack_area;
   r.time = sim.time();
+  r.equivalent_crack_length = equivalent_crack_length_m(P);
+  r.ledger_dissipation = sim.energy().damage_dissipation;
+  for (std::size_t p = 0; p < P.size(); ++p) r.particle_dissipation += P.damage_dissipation[p];
   return r;
 }
 
@@ -236,4 +243,48 @@ TEST(HillerborgShearBand, RateDependentFractureEnergyFollowsTheTransitionLaw) {
     // 4 %: the three targets differ by 35-70 %
     EXPECT_NEAR(r.dissipation_per_area / expected, 1.0, 0.04) << what;
   }
+}
+
+// Fracture accounting (docs/analysis.md, "Fracture accounting"): the crack length a run's damage
+// dissipation stands for is the sum over particles of dissipation / G_f of that particle. For a band that
+// fails along a known line it must be the line's length: the 0.48 mm layer sheared apart (mode II) and
+// the 0.16 mm bar pulled apart (mode I). The per-particle tallies must add up to the ledger exactly.
+// Were the band two cells wide (smeared damage) or the length the particle spacing, it would be 2x.
+TEST(FractureAccounting, EquivalentCrackLengthIsTheLengthOfAKnownCrack) {
+  const double layer = 0.48e-3, bar = 0.16e-3;  // m
+  for (double h : {40e-6, 20e-6}) {
+    const BandResult r = layer_band(h, DamageEvolution::Linear, 2, Mode::Shear);
+    ASSERT_TRUE(r.band_failed);
+    std::printf("shear band, h = %.0f um: equivalent crack %.4f mm for a %.2f mm crack\n", h * 1e6,
+                r.equivalent_crack_length * 1e3, layer * 1e3);
+    EXPECT_NEAR(r.particle_dissipation / r.ledger_dissipation, 1.0, 1e-9);
+    // 3 %: the elastic release h Y adds 1.3 % at h = 40 um (top of the file)
+    EXPECT_NEAR(r.equivalent_crack_length / layer, 1.0, 0.03) << "h = " << h;
+  }
+  const BandResult r = pulled_bar(20e-6, DamageEvolution::Linear);
+  ASSERT_TRUE(r.band_failed);
+  std::printf("pulled bar, h = 20 um: equivalent crack %.4f mm for a %.2f mm crack\n", r.equivalent_crack_length * 1e3,
+              bar * 1e3);
+  EXPECT_NEAR(r.particle_dissipation / r.ledger_dissipation, 1.0, 1e-9);
+  EXPECT_NEAR(r.equivalent_crack_length / bar, 1.0, 0.05);
+}
+
+// With a rate-dependent G_f each particle's dissipation is divided by its own G_f: a band sheared at
+// 50 m/s dissipates G_f(rate) = 133 J/m^2 per area, so the ledger over the low-rate G_f (500 J/m^2) would
+// say 0.27 of the crack; the per-particle sum says the whole crack.
+TEST(FractureAccounting, RateDependentFractureEnergyIsAccountedPerParticle) {
+  const double h = 20e-6, layer = 0.48e-3;
+  const auto rate_dependence = [&](MaterialParameters& m) {
+    m.fracture_energy_brittle = 100.0;
+    m.fracture_transition_strain_rate = 15.0 / (std::sqrt(3.0) * h);
+    m.fracture_transition_exponent = 2.0;
+  };
+  const BandResult r = layer_band(h, DamageEvolution::Linear, 2, Mode::Shear, 50.0, rate_dependence);
+  ASSERT_TRUE(r.band_failed);
+  EXPECT_LT(r.ledger_dissipation / kFractureEnergy / layer, 0.35);
+  // The elastic release h Y (3 J/m^2) is 2.4 % of G_f(rate) = 133 J/m^2 here; 4 % as in the test above.
+  const double rate = 50.0 / (std::sqrt(3.0) * h), rate_t = 15.0 / (std::sqrt(3.0) * h);
+  const double gf = 100.0 + (kFractureEnergy - 100.0) / (1.0 + std::pow(rate / rate_t, 2.0));
+  const double release = h * kYield * kYield / (6.0 * kE / (2.0 * (1.0 + kNu)));
+  EXPECT_NEAR(r.equivalent_crack_length / layer / (1.0 + release / gf), 1.0, 0.04);
 }

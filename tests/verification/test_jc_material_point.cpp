@@ -253,6 +253,7 @@ TEST(JohnsonCookMaterialPoint, AdiabaticHeatingMatchesRK4) {
 TEST(JohnsonCookMaterialPoint, InitiationAtFailureStrain) {
   MaterialParameters m = with_damage(ti64());
   m.taylor_quinney = 0.0;
+  m.damage_triaxiality_cutoff = -1.0;  // the JC law itself down to eta = -1/3 (the cut-off: next test)
   const JohnsonCookMaterial jc(m);
   struct Case { double eta, eps_f; };
   for (const Case c : {Case{0.0, 0.160}, Case{-1.0 / 3.0, 0.205}, Case{1.0 / 3.0, 0.122}, Case{2.0 / 3.0, 0.089}}) {
@@ -284,6 +285,31 @@ TEST(JohnsonCookMaterialPoint, InitiationAtFailureStrain) {
     }
     ASSERT_GT(eps_at_initiation, 0.0) << "no initiation for eta " << c.eta;
     EXPECT_NEAR(eps_at_initiation, ef, 1e-6 * ef) << "eta " << c.eta;
+  }
+}
+
+// theory §5.7: no ductile fracture at or below the triaxiality cut-off (Bao & Wierzbicki 2005, -1/3 by
+// default). Plastic flow at eta = -0.4 (compression with shear) to eps_p = 1, five times the JC eps_f of
+// eta = -1/3, neither initiates nor damages, and all its work is plastic work; just above the cut-off
+// (eta = -0.3) the same path initiates.
+TEST(JohnsonCookMaterialPoint, NoFractureBelowTheTriaxialityCutOff) {
+  MaterialParameters m = with_damage(ti64());
+  m.taylor_quinney = 0.0;
+  const JohnsonCookMaterial jc(m);
+  for (const double eta : {-0.4, -0.3}) {
+    MaterialPointDriver d(jc, 298.0, 5e-6);
+    for (int k = 0; k < 40000 && d.last().plastic_strain < 1.0; ++k)
+      d.step_with_triaxiality(diagonal(-0.25, 0.0), 1e-3, eta);
+    ASSERT_GE(d.last().plastic_strain, 1.0) << "eta " << eta;
+    if (eta < m.damage_triaxiality_cutoff) {
+      EXPECT_EQ(d.last().damage_initiation, 0.0);
+      EXPECT_EQ(d.last().damage, 0.0);
+      EXPECT_EQ(d.last().cumulative.damage_dissipation, 0.0);
+      EXPECT_GT(d.last().cumulative.plastic_work, 0.0);
+    } else {
+      EXPECT_GE(d.last().damage_initiation, 1.0) << "eta " << eta;
+      EXPECT_GT(d.last().damage, 0.0) << "eta " << eta;
+    }
   }
 }
 

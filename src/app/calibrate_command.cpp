@@ -1,0 +1,84 @@
+#include "app/calibrate_command.hpp"
+
+#include <filesystem>
+#include <iostream>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "app/plot_command.hpp"
+#include "io/input_error.hpp"
+#include "studies/calibration.hpp"
+#include "studies/task_farm.hpp"
+
+namespace mpmcut {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kExitInputError = 2;
+
+struct CalibrateOptions {
+  std::string config_file;
+  std::string out_dir;
+  int jobs = 0;
+  bool force = false;
+  bool no_plots = false;
+};
+
+int calibrate(const CalibrateOptions& o) {
+  CalibrationConfig config;
+  fs::path out;
+  try {
+    // Everything is checked before anything runs.
+    config = read_calibration_config(o.config_file, embedded_tool_file(kBuiltinForcesFile));
+    out = o.out_dir.empty() ? fs::path("results") / ("calibration_" + fs::path(o.config_file).stem().string())
+                            : fs::path(o.out_dir);
+    if (o.force) fs::remove_all(out);
+    const int jobs = o.jobs > 0 ? o.jobs
+                                : std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / config.threads);
+    const int code = run_calibration(config, out, jobs);
+    if (code == 130) return code;
+    if (!o.no_plots) {
+      std::string why;
+      if (!python_plotting_available(false, why))
+        std::cerr << "warning: no calibration plots: " << why << "\n";
+      else if (const int plot = run_python_tool("plot_calibration.py", {out.string()}); plot != 0)
+        std::cerr << "warning: plot_calibration.py failed (exit status " << plot << ")\n";
+    }
+    return code;
+  } catch (const InputError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return kExitInputError;
+  }
+}
+
+}  // namespace
+
+void add_calibrate_command(CLI::App& app) {
+  auto o = std::make_shared<CalibrateOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "calibrate", "Fit material parameters (and the tool friction) to measured cutting forces with NLopt: "
+                   "evaluations.csv, best_material.toml, calibration.md, plots (docs/calibration.md)");
+  cmd->add_option("config", o->config_file, "Calibration file (TOML), e.g. cases/calibration/ti64_klippel_forces.toml")
+      ->required();
+  cmd->add_option("-o,--out", o->out_dir, "Result directory (default: results/calibration_<config name>); an "
+                                          "existing one with the same configuration is resumed");
+  cmd->add_option("-j,--jobs", o->jobs, "Runs at the same time (default: cores / threads of each run)")
+      ->check(CLI::Range(1, 1024));
+  cmd->add_flag("-f,--force", o->force, "Delete the result directory first (no resume)");
+  cmd->add_flag("--no-plots", o->no_plots, "Only the tables");
+  cmd->callback([o]() {
+    int code = 0;
+    try {
+      code = run_study([&] { return calibrate(*o); });
+    } catch (const std::exception& e) {
+      std::cerr << "error: " << e.what() << "\n";
+      code = 4;
+    }
+    throw CLI::RuntimeError(code);
+  });
+}
+
+}  // namespace mpmcut

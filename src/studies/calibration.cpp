@@ -1,0 +1,536 @@
+#include "studies/calibration.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <ctime>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <nlopt.h>
+#include <nlohmann/json.hpp>
+
+#include "io/atomic_file.hpp"
+#include "io/input_error.hpp"
+#include "studies/task_farm.hpp"
+
+namespace mpmcut {
+
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+// The relative error a failed run counts with, for each of its quantities: large enough that the
+// optimizer leaves that region, finite so that its arithmetic stays sane.
+constexpr double kFailedRunError = 10.0;
+// The relative error of a chip thickness that was measured but that the chip analysis could not give.
+constexpr double kMissingChipThicknessError = 1.0;
+
+std::string condition_id(const MeasuredForces& m) { return fmt::format("h{:g}mm_vc{:g}mpmin", m.h_mm, m.vc_m_per_min); }
+
+CuttingCondition cutting_condition(const MeasuredForces& m) {
+  CuttingCondition c;
+  c.id = condition_id(m);
+  c.kind = "forces";
+  c.speed_m_per_s = m.vc_m_per_min / 60.0;
+  c.h_mm = m.h_mm;
+  c.edge_radius_um = m.edge_radius_um;
+  return c;
+}
+
+// One condition's simulated result, as far as the objective uses it.
+struct ConditionResult {
+  std::string status;  // "complete" or why not
+  std::optional<double> fc_N_per_mm, ft_N_per_mm, chip_thickness_um;
+};
+
+json to_json(const std::optional<double>& x) { return x ? json(*x) : json(nullptr); }
+std::optional<double> from_json(const json& j) {
+  return j.is_number() ? std::optional<double>(j.get<double>()) : std::nullopt;
+}
+
+// One evaluation: the optimizer's point, the parameter values and the outcome.
+struct Evaluation {
+  std::vector<double> u;       // the optimizer's variables, each in [0, 1]
+  std::vector<double> values;  // the parameters, in their units
+  double objective = 0;
+  std::vector<ConditionResult> conditions;  // per training condition
+};
+
+json to_json(const Evaluation& e) {
+  json c = json::array();
+  for (const ConditionResult& r : e.conditions)
+    c.push_back({{"status", r.status}, {"Fc_N_per_mm", to_json(r.fc_N_per_mm)}, {"Ft_N_per_mm", to_json(r.ft_N_per_mm)},
+                 {"chip_thickness_um", to_json(r.chip_thickness_um)}});
+  return {{"u", e.u}, {"values", e.values}, {"objective", e.objective}, {"conditions", c}};
+}
+Evaluation evaluation_from_json(const json& j) {
+  Evaluation e;
+  e.u = j.at("u").get<std::vector<double>>();
+  e.values = j.at("values").get<std::vector<double>>();
+  e.objective = j.at("objective").get<double>();
+  for (const json& c : j.at("conditions"))
+    e.conditions.push_back({c.at("status").get<std::string>(), from_json(c.at("Fc_N_per_mm")),
+                            from_json(c.at("Ft_N_per_mm")), from_json(c.at("chip_thickness_um"))});
+  return e;
+}
+
+// The cache key of a point: the exact bits of each variable (hexadecimal floating point), so that a
+// replayed optimizer, which proposes bit-identical points, finds its earlier evaluations.
+std::string point_key(const std::vector<double>& u) {
+  std::string key;
+  for (double x : u) key += fmt::format("{}{:a}", key.empty() ? "" : ",", x);
+  return key;
+}
+
+std::string number_text(const std::optional<double>& x, int digits = 4) {
+  return x && std::isfinite(*x) ? fmt::format("{:.{}g}", *x, digits) : std::string();
+}
+std::string percent(const std::optional<double>& e) { return e ? fmt::format("{:+.1f}", 100.0 * *e) : std::string(); }
+
+class Calibrator {
+ public:
+  Calibrator(const CalibrationConfig& c, fs::path out, int jobs) : c_(c), out_(std::move(out)), jobs_(jobs) {}
+
+  int run();
+
+ private:
+  // Parameter value <-> the optimizer's variable in [0, 1] (uniform, or uniform in log for log_scale).
+  double value_of(std::size_t i, double u) const {
+    const CalibrationParameter& p = c_.parameters[i];
+    return p.log_scale ? p.min * std::pow(p.max / p.min, u) : p.min + u * (p.max - p.min);
+  }
+  double u_of(std::size_t i, double value) const {
+    const CalibrationParameter& p = c_.parameters[i];
+    return p.log_scale ? std::log(value / p.min) / std::log(p.max / p.min) : (value - p.min) / (p.max - p.min);
+  }
+
+  ConditionRunSettings settings_for(const std::vector<double>& values) const;
+  std::vector<ConditionResult> run_conditions(const std::vector<MeasuredForces>& conditions,
+                                              const std::vector<double>& values, const fs::path& dir, bool& completed);
+  // Relative errors of one condition (nullopt where not measured), the failed-run error where it failed.
+  struct Errors {
+    std::optional<double> fc, ft, chip_thickness;
+  };
+  Errors errors(const MeasuredForces& m, const ConditionResult& r) const;
+  double objective(const std::vector<MeasuredForces>& conditions, const std::vector<ConditionResult>& results) const;
+
+  static double nlopt_objective(unsigned n, const double* x, double* grad, void* self);
+  double evaluate(const std::vector<double>& u);
+  void optimize_stage(const std::string& algorithm, int budget, std::vector<double>& u);
+
+  void load_cache();
+  void append_to_cache(const std::string& key, const Evaluation& e);
+  void write_evaluations_csv() const;
+  void write_results(const Evaluation& best, const std::vector<ConditionResult>& held_back, bool held_back_complete);
+
+  const CalibrationConfig& c_;
+  fs::path out_;
+  int jobs_;
+  std::map<std::string, Evaluation> cache_;
+  std::vector<std::pair<std::string, std::string>> sequence_;  // (stage, key) of every evaluation, in order
+  std::string stage_;
+  nlopt_opt current_ = nullptr;
+  bool interrupted_ = false;
+  int ran_ = 0, replayed_ = 0;
+};
+
+ConditionRunSettings Calibrator::settings_for(const std::vector<double>& values) const {
+  ConditionRunSettings s = c_.runs;
+  s.snapshots = 2;  // the last one is what the chip analysis reads; more would only fill the disk
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (c_.parameters[i].name == "friction") {
+      s.friction = values[i];
+      s.friction_note = "calibration trial value";
+    } else {
+      s.material_overrides.emplace_back(c_.parameters[i].name, values[i]);
+    }
+  }
+  return s;
+}
+
+std::vector<ConditionResult> Calibrator::run_conditions(const std::vector<MeasuredForces>& conditions,
+                                                        const std::vector<double>& values, const fs::path& dir,
+                                                        bool& completed) {
+  const ConditionRunSettings settings = settings_for(values);
+  fs::create_directories(dir / "cases");
+  fs::create_directories(dir / "logs");
+  std::vector<ChildRun> runs;
+  for (const MeasuredForces& m : conditions) {
+    const CuttingCondition cc = cutting_condition(m);
+    const fs::path case_file = dir / "cases" / (cc.id + ".toml");
+    write_file_atomically(case_file, [&](std::ostream& s) { s << condition_case_text(cc, settings); });
+    ChildRun r;
+    r.name = dir.filename().string() + "/" + cc.id;
+    r.args = {"run", case_file.string(), "--out", (dir / cc.id).string(), "--force", "--no-progress", "--no-plots",
+              "--threads", std::to_string(c_.threads)};
+    r.log_file = dir / "logs" / (cc.id + ".log");
+    runs.push_back(r);
+  }
+  completed = run_cases(runs, jobs_, true);
+  // The chip thickness comes from the chip analysis of the last snapshot.
+  if (completed && c_.weight_chip_thickness > 0) {
+    std::vector<ChildRun> analyses;
+    for (std::size_t i = 0; i < conditions.size(); ++i) {
+      if (!conditions[i].chip_thickness_um || runs[i].exit_code != 0) continue;
+      ChildRun a;
+      a.name = runs[i].name + " (analyze)";
+      a.args = {"analyze", (dir / cutting_condition(conditions[i]).id).string()};
+      a.log_file = dir / "logs" / (cutting_condition(conditions[i]).id + ".analyze.log");
+      analyses.push_back(a);
+    }
+    if (!analyses.empty()) completed = run_cases(analyses, jobs_, false);
+  }
+  std::vector<ConditionResult> results;
+  for (std::size_t i = 0; i < conditions.size(); ++i) {
+    const CaseResult r = read_case_result(dir / cutting_condition(conditions[i]).id, runs[i].log_file, runs[i].exit_code);
+    ConditionResult cr;
+    cr.status = r.status == "complete" ? r.status : fmt::format("{}: {}", r.status, r.message);
+    cr.fc_N_per_mm = r.cutting_force_N_per_mm;
+    cr.ft_N_per_mm = r.thrust_force_N_per_mm;
+    if (r.chip_thickness_ratio && *r.chip_thickness_ratio > 0)
+      cr.chip_thickness_um = conditions[i].h_mm * 1e3 / *r.chip_thickness_ratio;  // t_c = t0 / r
+    results.push_back(cr);
+  }
+  return results;
+}
+
+Calibrator::Errors Calibrator::errors(const MeasuredForces& m, const ConditionResult& r) const {
+  Errors e;
+  const bool failed = r.status != "complete" || !r.fc_N_per_mm || !r.ft_N_per_mm;
+  const double b = c_.width_of_cut_mm;  // measured N over the ASSUMED width -> N/mm
+  e.fc = failed ? kFailedRunError : (*r.fc_N_per_mm - m.fc_N / b) / (m.fc_N / b);
+  e.ft = failed ? kFailedRunError : (*r.ft_N_per_mm - m.ff_N / b) / (m.ff_N / b);
+  if (m.chip_thickness_um)
+    e.chip_thickness = failed               ? kFailedRunError
+                       : r.chip_thickness_um ? (*r.chip_thickness_um - *m.chip_thickness_um) / *m.chip_thickness_um
+                                             : kMissingChipThicknessError;
+  return e;
+}
+
+// Weighted root-mean-square relative error over the conditions and quantities (dimensionless):
+// J = sqrt( sum w_q e_iq^2 / sum w_q ), the chip thickness only where it was measured.
+double Calibrator::objective(const std::vector<MeasuredForces>& conditions,
+                             const std::vector<ConditionResult>& results) const {
+  double sum = 0, weights = 0;
+  for (std::size_t i = 0; i < conditions.size(); ++i) {
+    const Errors e = errors(conditions[i], results[i]);
+    sum += c_.weight_fc * *e.fc * *e.fc + c_.weight_ft * *e.ft * *e.ft;
+    weights += c_.weight_fc + c_.weight_ft;
+    if (e.chip_thickness && c_.weight_chip_thickness > 0) {
+      sum += c_.weight_chip_thickness * *e.chip_thickness * *e.chip_thickness;
+      weights += c_.weight_chip_thickness;
+    }
+  }
+  return std::sqrt(sum / weights);
+}
+
+double Calibrator::nlopt_objective(unsigned n, const double* x, double*, void* self) {
+  return static_cast<Calibrator*>(self)->evaluate(std::vector<double>(x, x + n));
+}
+
+double Calibrator::evaluate(const std::vector<double>& u) {
+  const std::string key = point_key(u);
+  const std::size_t index = sequence_.size() + 1;
+  if (const auto it = cache_.find(key); it != cache_.end()) {
+    sequence_.emplace_back(stage_, key);
+    ++replayed_;
+    return it->second.objective;
+  }
+  if (interrupted_) return HUGE_VAL;  // NLopt is stopping; nothing more runs
+  Evaluation e;
+  e.u = u;
+  for (std::size_t i = 0; i < u.size(); ++i) e.values.push_back(value_of(i, u[i]));
+  std::string values;
+  for (std::size_t i = 0; i < u.size(); ++i)
+    values += fmt::format("{}{} = {:.6g}", values.empty() ? "" : ", ", c_.parameters[i].name, e.values[i]);
+  std::cout << fmt::format("evaluation {} ({} stage): {}\n", index, stage_, values) << std::flush;
+  bool completed = true;
+  e.conditions = run_conditions(c_.training, e.values, out_ / "evaluations" / fmt::format("e{:04d}", index), completed);
+  if (!completed) {
+    // Not cached: the next start runs this evaluation again.
+    interrupted_ = true;
+    nlopt_force_stop(current_);
+    return HUGE_VAL;
+  }
+  e.objective = objective(c_.training, e.conditions);
+  cache_[key] = e;
+  append_to_cache(key, e);
+  sequence_.emplace_back(stage_, key);
+  ++ran_;
+  write_evaluations_csv();
+  std::cout << fmt::format("evaluation {}: objective {:.4g} (weighted RMS relative error)\n", index, e.objective)
+            << std::flush;
+  return e.objective;
+}
+
+void Calibrator::optimize_stage(const std::string& algorithm, int budget, std::vector<double>& u) {
+  if (algorithm == "none" || budget <= 0 || interrupted_) return;
+  const std::size_t n = u.size();
+  nlopt_opt opt = nlopt_create(nlopt_algorithm_from_string(algorithm.c_str()), static_cast<unsigned>(n));
+  current_ = opt;
+  const std::vector<double> lower(n, 0.0), upper(n, 1.0);
+  nlopt_set_lower_bounds(opt, lower.data());
+  nlopt_set_upper_bounds(opt, upper.data());
+  nlopt_set_min_objective(opt, &Calibrator::nlopt_objective, this);
+  nlopt_set_maxeval(opt, budget);
+  // The same seed before each stage: a replay after a restart proposes the same points.
+  nlopt_srand(c_.seed);
+  double f = 0;
+  const nlopt_result r = nlopt_optimize(opt, u.data(), &f);
+  if (!interrupted_)
+    std::cout << fmt::format("{} stage ({}): {}\n", stage_, algorithm, nlopt_result_to_string(r)) << std::flush;
+  nlopt_destroy(opt);
+  current_ = nullptr;
+}
+
+void Calibrator::load_cache() {
+  const fs::path file = out_ / "cache.jsonl";
+  std::ifstream in(file);
+  std::string complete;  // the lines that parse, each with its newline
+  bool damaged = false;
+  for (std::string line; std::getline(in, line);) {
+    const json j = json::parse(line, nullptr, false);
+    if (j.is_discarded() || !j.contains("key") || in.eof()) {  // a line cut short by a kill
+      damaged = true;
+      continue;
+    }
+    cache_[j.at("key").get<std::string>()] = evaluation_from_json(j.at("evaluation"));
+    complete += line + "\n";
+  }
+  in.close();
+  // Without its cut-short tail, so that the next line appended starts on a line of its own.
+  if (damaged) write_file_atomically(file, [&](std::ostream& s) { s << complete; });
+}
+
+void Calibrator::append_to_cache(const std::string& key, const Evaluation& e) {
+  // One line per completed evaluation, flushed to the disk before the optimizer goes on: a kill -9 loses at
+  // most the evaluation that was running. A line cut short is skipped when the cache is read.
+  const std::string line = json{{"key", key}, {"evaluation", to_json(e)}}.dump() + "\n";
+  const int fd = ::open((out_ / "cache.jsonl").c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
+  if (fd < 0) throw std::runtime_error(fmt::format("cannot write {}", (out_ / "cache.jsonl").string()));
+  const bool ok = ::write(fd, line.data(), line.size()) == static_cast<ssize_t>(line.size()) && ::fsync(fd) == 0;
+  ::close(fd);
+  if (!ok) throw std::runtime_error(fmt::format("cannot write {}", (out_ / "cache.jsonl").string()));
+}
+
+void Calibrator::write_evaluations_csv() const {
+  write_file_atomically(out_ / "evaluations.csv", [&](std::ostream& s) {
+    s << "evaluation,stage";
+    for (const CalibrationParameter& p : c_.parameters) s << "," << p.name;
+    s << ",objective,best_objective";
+    for (const MeasuredForces& m : c_.training) {
+      const std::string id = condition_id(m);
+      s << "," << id << "_Fc_N_per_mm," << id << "_Ft_N_per_mm," << id << "_chip_thickness_um," << id << "_status";
+    }
+    s << "\n";
+    double best = HUGE_VAL;
+    for (std::size_t k = 0; k < sequence_.size(); ++k) {
+      const Evaluation& e = cache_.at(sequence_[k].second);
+      best = std::min(best, e.objective);
+      s << k + 1 << "," << sequence_[k].first;
+      for (double v : e.values) s << fmt::format(",{}", v);
+      s << fmt::format(",{},{}", e.objective, best);
+      for (const ConditionResult& r : e.conditions) {
+        std::string status = r.status;
+        for (char& ch : status)
+          if (ch == ',' || ch == '"' || ch == '\n') ch = ' ';
+        s << "," << number_text(r.fc_N_per_mm, 6) << "," << number_text(r.ft_N_per_mm, 6) << ","
+          << number_text(r.chip_thickness_um, 6) << "," << status;
+      }
+      s << "\n";
+    }
+  });
+}
+
+void Calibrator::write_results(const Evaluation& best, const std::vector<ConditionResult>& held_back,
+                               bool held_back_complete) {
+  const std::time_t now = std::time(nullptr);
+  char date[32];
+  std::strftime(date, sizeof date, "%Y-%m-%d", std::localtime(&now));
+  std::string training_list, held_list;
+  for (const MeasuredForces& m : c_.training) training_list += (training_list.empty() ? "" : ", ") + condition_id(m);
+  for (const MeasuredForces& m : c_.held_back) held_list += (held_list.empty() ? "" : ", ") + condition_id(m);
+  const std::string objective_text = fmt::format(
+      "weighted RMS relative error, weights Fc {:g}, Ft {:g}, chip thickness {:g}; measured forces in N divided by "
+      "an ASSUMED width of cut b = {:g} mm",
+      c_.weight_fc, c_.weight_ft, c_.weight_chip_thickness, c_.width_of_cut_mm);
+  const std::string budget_text =
+      fmt::format("{} evaluations ({} global {}, then {}), seed {}", c_.evaluations, c_.global_evaluations,
+                  c_.global_algorithm, c_.local_algorithm, c_.seed);
+  const std::string resolution = c_.runs.quick ? "quick (cell = t0/4, 1 particle per cell, 4 cells of travel)"
+                                               : fmt::format("cell = t0/{}", c_.runs.cells_per_feed);
+
+  // The best set, ready to paste into a case file or materials/.
+  const auto friction_index = [&]() -> std::optional<std::size_t> {
+    for (std::size_t i = 0; i < c_.parameters.size(); ++i)
+      if (c_.parameters[i].name == "friction") return i;
+    return std::nullopt;
+  }();
+  write_file_atomically(out_ / "best_material.toml", [&](std::ostream& s) {
+    s << "# Calibrated by `mpmcut calibrate " << c_.file.string() << "` on " << date << ".\n";
+    s << "# Data: " << c_.measurements_source << "; training conditions (h, vc): " << training_list << ".\n";
+    s << "# Objective: " << objective_text << "; value at this set " << fmt::format("{:.4g}", best.objective) << ".\n";
+    s << "# Budget: " << budget_text << "; runs at " << resolution << ".\n";
+    if (friction_index)
+      s << fmt::format("# Tool friction (a [cutting] key, not a material key): friction = {}\n",
+                       best.values[*friction_index]);
+    s << "[[material]]\n";
+    s << fmt::format("name = \"{}\"\n", c_.set_name);
+    s << fmt::format("library = \"{}\"\n", c_.base_material);
+    s << fmt::format("citation = \"mpmcut calibrate {}: {} fitted to {} training condition(s) of {}, objective {:.4g}\"\n",
+                     date, c_.base_material, c_.training.size(), c_.measurements_source, best.objective);
+    for (std::size_t i = 0; i < c_.parameters.size(); ++i)
+      if (c_.parameters[i].name != "friction") s << fmt::format("{} = {}\n", c_.parameters[i].name, best.values[i]);
+  });
+
+  // Per condition: measured, simulated, error, training and held back side by side.
+  const auto row = [&](const std::string& set, const MeasuredForces& m, const ConditionResult& r,
+                       std::vector<std::string>& cells) {
+    const Errors e = errors(m, r);
+    const double b = c_.width_of_cut_mm;
+    const bool ok = r.status == "complete";
+    cells = {set, condition_id(m), fmt::format("{:g}", m.h_mm), fmt::format("{:g}", m.vc_m_per_min),
+             fmt::format("{:.4g}", m.fc_N / b), number_text(r.fc_N_per_mm), ok ? percent(e.fc) : "",
+             fmt::format("{:.4g}", m.ff_N / b), number_text(r.ft_N_per_mm), ok ? percent(e.ft) : "",
+             m.chip_thickness_um ? fmt::format("{:.4g}", *m.chip_thickness_um) : "", number_text(r.chip_thickness_um),
+             ok && r.chip_thickness_um ? percent(e.chip_thickness) : "", r.status};
+  };
+  TextTable table;
+  table.columns = {"set", "condition", "h_mm", "vc_m_per_min", "measured_Fc_N_per_mm", "simulated_Fc_N_per_mm",
+                   "Fc_error_percent", "measured_Ft_N_per_mm", "simulated_Ft_N_per_mm", "Ft_error_percent",
+                   "measured_chip_thickness_um", "simulated_chip_thickness_um", "chip_thickness_error_percent",
+                   "status"};
+  table.headings = {"set", "condition", "h (mm)", "vc (m/min)", "Fc measured (N/mm)", "Fc simulated (N/mm)",
+                    "Fc error %", "Ft measured (N/mm)", "Ft simulated (N/mm)", "Ft error %",
+                    "chip thickness measured (µm)", "simulated (µm)", "error %", "status"};
+  for (std::size_t i = 0; i < c_.training.size(); ++i) row("training", c_.training[i], best.conditions[i], table.rows.emplace_back());
+  for (std::size_t i = 0; i < held_back.size(); ++i) row("held back", c_.held_back[i], held_back[i], table.rows.emplace_back());
+  table.write_csv(out_ / "calibration_best.csv");
+  const double held_objective = c_.held_back.empty() ? NAN : objective(c_.held_back, held_back);
+
+  write_file_atomically(out_ / "calibration.md", [&](std::ostream& s) {
+    s << "# Calibration " << c_.set_name << "\n\n";
+    if (c_.runs.quick)
+      s << "**quick runs (cell = t0/4, 1 particle per cell, 4 cells of tool travel): a pipeline check; the forces "
+           "are not converged and this set must not be used.**\n\n";
+    s << fmt::format("Configuration `{}`, {}. Base set `{}`; free parameters:\n\n", c_.file.string(), date,
+                     c_.base_material);
+    s << "| parameter | min | max | start | scale | best |\n|---|---|---|---|---|---|\n";
+    for (std::size_t i = 0; i < c_.parameters.size(); ++i) {
+      const CalibrationParameter& p = c_.parameters[i];
+      s << fmt::format("| {} | {:g} | {:g} | {:g} | {} | {:.6g} |\n", p.name, p.min, p.max, p.start,
+                       p.log_scale ? "log" : "linear", best.values[i]);
+    }
+    s << "\n## Objective\n\n" << objective_text << ". A failed run counts as a relative error of "
+      << kFailedRunError << " in each of its quantities; a measured chip thickness that the chip analysis could not "
+         "give, as "
+      << kMissingChipThicknessError << ".\n\n";
+    s << fmt::format("- training ({} conditions): **{:.4g}** at the best set\n", c_.training.size(), best.objective);
+    if (!c_.held_back.empty())
+      s << fmt::format("- held back ({} conditions, not used by the optimizer): **{:.4g}**{}\n", c_.held_back.size(),
+                       held_objective, held_back_complete ? "" : " (some runs did not complete)");
+    s << "\n## Budget\n\n" << budget_text << fmt::format("; {} evaluations in this directory. Runs at {}.\n\n",
+                                                         sequence_.size(), resolution);
+    s << "## Errors at the best set: training and held back\n\n" << table.markdown() << "\n";
+    s << "Error % = (simulated − measured) / measured; measured N/mm = measured N / b with b = "
+      << c_.width_of_cut_mm << " mm ASSUMED (the width of cut is not in the data file).\n\n";
+    s << "Data: " << c_.measurements_source << ".\n\n";
+    s << "## Files\n\nbest_material.toml (the set, with its provenance), evaluations.csv (every evaluation: "
+         "parameters, per-condition forces, objective), calibration_best.csv (this table), convergence.png, "
+         "parity.png, evaluations/eNNNN/ (the runs of each evaluation), best_held_back/ (the held-back runs), "
+         "cache.jsonl (completed evaluations, replayed on a restart).\n";
+  });
+}
+
+int Calibrator::run() {
+  fs::create_directories(out_);
+  load_cache();
+  if (!cache_.empty())
+    std::cout << fmt::format("mpmcut calibrate: {} completed evaluations in {}, replayed to the optimizer\n",
+                             cache_.size(), (out_ / "cache.jsonl").string());
+  std::cout << fmt::format("mpmcut calibrate: {} parameters, {} training and {} held-back conditions, {} evaluations "
+                           "of {} runs each, {}; results in {}\n",
+                           c_.parameters.size(), c_.training.size(), c_.held_back.size(), c_.evaluations,
+                           c_.training.size(), concurrency_text(jobs_), out_.string())
+            << std::flush;
+
+  std::vector<double> u;
+  for (std::size_t i = 0; i < c_.parameters.size(); ++i) u.push_back(u_of(i, c_.parameters[i].start));
+  stage_ = "global";
+  optimize_stage(c_.global_algorithm, c_.global_evaluations, u);
+  // The local stage starts from the best point so far (the start itself without a global stage).
+  std::string best_key;
+  for (const auto& [stage, key] : sequence_)
+    if (best_key.empty() || cache_.at(key).objective < cache_.at(best_key).objective) best_key = key;
+  if (!best_key.empty()) u = cache_.at(best_key).u;
+  stage_ = "local";
+  optimize_stage(c_.local_algorithm, c_.evaluations - static_cast<int>(sequence_.size()), u);
+  write_evaluations_csv();
+  if (interrupted_) {
+    std::cerr << fmt::format("mpmcut calibrate: interrupted after {} evaluations; the same command resumes (the {} "
+                             "completed ones are not run again)\n",
+                             sequence_.size(), cache_.size());
+    return 130;
+  }
+  for (const auto& [stage, key] : sequence_)
+    if (best_key.empty() || cache_.at(key).objective < cache_.at(best_key).objective) best_key = key;
+  const Evaluation& best = cache_.at(best_key);
+  std::cout << fmt::format("mpmcut calibrate: {} evaluations ({} run now, {} from the cache); best objective {:.4g}\n",
+                           sequence_.size(), ran_, replayed_, best.objective);
+
+  // The held-back conditions at the best set, cached like an evaluation (under their own key).
+  std::vector<ConditionResult> held_back;
+  const std::string held_key = "held_back:" + best_key;
+  if (const auto it = cache_.find(held_key); it != cache_.end()) {
+    held_back = it->second.conditions;
+  } else if (!c_.held_back.empty()) {
+    std::cout << "mpmcut calibrate: the held-back conditions at the best set\n" << std::flush;
+    bool completed = true;
+    held_back = run_conditions(c_.held_back, best.values, out_ / "best_held_back", completed);
+    if (!completed) return 130;
+    Evaluation e = best;
+    e.conditions = held_back;
+    e.objective = objective(c_.held_back, held_back);
+    cache_[held_key] = e;
+    append_to_cache(held_key, e);
+  }
+  bool held_back_complete = true;
+  for (const ConditionResult& r : held_back) held_back_complete = held_back_complete && r.status == "complete";
+  write_results(best, held_back, held_back_complete);
+  std::cout << "wrote " << (out_ / "calibration.md").string() << ", best_material.toml, evaluations.csv, "
+            << "calibration_best.csv\n";
+  return held_back_complete ? 0 : 1;
+}
+
+}  // namespace
+
+int run_calibration(const CalibrationConfig& config, const fs::path& out, int jobs) {
+  // A directory holds one calibration: resuming with a changed configuration would replay a cache that
+  // belongs to another problem.
+  std::ifstream in(config.file);
+  std::stringstream text;
+  text << in.rdbuf();
+  const fs::path copy = out / "calibration.toml";
+  if (fs::exists(copy)) {
+    std::ifstream old(copy);
+    std::stringstream old_text;
+    old_text << old.rdbuf();
+    if (old_text.str() != text.str())
+      throw InputError(fmt::format("{}: holds a calibration of a different configuration than {} (differences "
+                                   "would make its cache of evaluations wrong); use another --out, or --force to "
+                                   "start this one afresh",
+                                   copy.string(), config.file.string()));
+  }
+  fs::create_directories(out);
+  write_file_atomically(copy, [&](std::ostream& s) { s << text.str(); });
+  return Calibrator(config, out, jobs).run();
+}
+
+}  // namespace mpmcut

@@ -1,0 +1,220 @@
+// Reading and checking a calibration configuration (studies/calibration.hpp; docs/calibration.md).
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <nlopt.h>
+
+#include "io/material_library.hpp"
+#include "io/scene_writer.hpp"
+#include "io/toml_reader.hpp"
+#include "studies/calibration.hpp"
+
+namespace mpmcut {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// The numeric keys of a material set with their values, as the scene writer spells them: the keys a
+// calibration may free. Taken from the writer so that a new material parameter needs no change here.
+std::map<std::string, double> numeric_material_keys(const MaterialParameters& m) {
+  std::ostringstream text;
+  write_material(m, text);
+  const toml::table t = toml::parse(text.str());
+  std::map<std::string, double> keys;
+  for (const auto& [key, node] : *t["material"][0].as_table())
+    if (node.is_number()) keys[std::string(key.str())] = node.value<double>().value();
+  return keys;
+}
+
+// Whether the base set with `key = value` is a valid material; the reader's message if not.
+std::string material_problem(const std::string& base, const std::string& key, double value) {
+  const std::string text = fmt::format("[[material]]\nname = \"check\"\nlibrary = \"{}\"\n{} = {}\n", base, key, value);
+  try {
+    const toml::table root = parse_toml(text, "calibration trial");
+    TableReader file(root, "", std::make_shared<InputSource>(InputSource{"calibration trial", {}}));
+    for (TableReader& t : file.array_of_tables("material")) read_material(t, builtin_material_library());
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return {};
+}
+
+nlopt_algorithm algorithm(TableReader& t, const char* key, const std::string& name, const char* prefix) {
+  const nlopt_algorithm a = nlopt_algorithm_from_string(name.c_str());
+  if (static_cast<int>(a) < 0 || !name.starts_with(prefix))
+    t.fail(key, fmt::format("\"{}\" is not an NLopt {} algorithm without derivatives (names as in NLopt without "
+                            "\"NLOPT_\", starting with {}: e.g. {}), or \"none\"",
+                            name, std::string_view(prefix) == "GN_" ? "global" : "local", prefix,
+                            std::string_view(prefix) == "GN_" ? "GN_CRS2_LM, GN_ISRES, GN_DIRECT_L"
+                                                              : "LN_BOBYQA, LN_COBYLA, LN_NELDERMEAD"));
+  return a;
+}
+
+}  // namespace
+
+CalibrationConfig read_calibration_config(const fs::path& file, std::string_view builtin_forces_csv) {
+  std::ifstream in(file);
+  if (!in) throw InputError(fmt::format("{}: cannot read the calibration file", file.string()));
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const toml::table root = parse_toml(buffer.str(), file.string());
+  TableReader t(root, "", std::make_shared<InputSource>(InputSource{file.string(), {}}));
+
+  CalibrationConfig c;
+  c.file = file;
+  t.require_key("name", "the name of the calibrated [[material]] set, e.g. \"ti64-calibrated\"");
+  c.set_name = t.string("name", "");
+  t.check("name", !c.set_name.empty(), "a non-empty string", 0.0);
+  c.base_material = t.string("base_material", "ti64-cutting");
+  const MaterialParameters* base = builtin_material_library().find(c.base_material);
+  if (base == nullptr)
+    t.fail("base_material", fmt::format("no material set \"{}\" in the library (docs/materials.md)", c.base_material));
+  const std::map<std::string, double> keys = numeric_material_keys(*base);
+  std::string key_list;
+  for (const auto& [k, v] : keys) key_list += (key_list.empty() ? "" : ", ") + k;
+  c.runs.purpose = "calibration";
+  c.runs.material = c.base_material;
+  c.runs.material_note = "the library set being calibrated (with the trial values)";
+
+  // How each condition is run.
+  if (auto r = t.optional_table("runs")) {
+    c.runs.quick = r->boolean("quick", false);
+    c.runs.cells_per_feed = static_cast<int>(r->integer("cells_per_feed", c.runs.cells_per_feed));
+    r->check("cells_per_feed", c.runs.cells_per_feed >= 2 && c.runs.cells_per_feed <= 100, "an integer from 2 to 100",
+             c.runs.cells_per_feed);
+    c.threads = static_cast<int>(r->integer("threads", 1));
+    r->check("threads", c.threads >= 1 && c.threads <= 1024, "an integer from 1 to 1024", c.threads);
+    c.runs.friction = r->number("friction", c.runs.friction);
+    r->check("friction", c.runs.friction >= 0.0 && c.runs.friction <= 2.0, "a Coulomb coefficient in [0, 2]",
+             c.runs.friction);
+    r->reject_unknown_keys();
+  }
+
+  // The free parameters.
+  std::vector<TableReader> params = t.array_of_tables("parameter");
+  if (params.empty()) t.fail_table("no [[parameter]] tables: name at least one free parameter");
+  for (TableReader& p : params) {
+    CalibrationParameter q;
+    p.require_key("name", "a numeric material key (e.g. jc_A) or \"friction\"");
+    q.name = p.string("name", "");
+    q.location = p.location("name");
+    const bool friction = q.name == "friction";
+    if (!friction && !keys.contains(q.name))
+      p.fail("name", fmt::format("unknown parameter \"{}\": a free parameter is \"friction\" or a numeric key of the "
+                                 "material set \"{}\": {}",
+                                 q.name, c.base_material, key_list));
+    for (const CalibrationParameter& other : c.parameters)
+      if (other.name == q.name) p.fail("name", fmt::format("\"{}\" is already free (at {})", q.name, other.location));
+    p.require_key("min", "lower bound, in the key's unit");
+    p.require_key("max", "upper bound, in the key's unit");
+    q.min = p.number("min", 0.0);
+    q.max = p.number("max", 0.0);
+    p.check("max", q.max > q.min, fmt::format("greater than min ({})", q.min), q.max);
+    q.log_scale = p.boolean("log_scale", false);
+    if (q.log_scale) p.check("min", q.min > 0.0, "> 0 with log_scale = true", q.min);
+    const double base_value = friction ? c.runs.friction : keys.at(q.name);
+    q.start = p.number("start", base_value);
+    if (!(q.start >= q.min && q.start <= q.max)) {
+      const std::string what = p.has("start") ? "" : fmt::format(" (the start value is {}'s {} = {})",
+                                                                 c.base_material, q.name, base_value);
+      p.fail(p.has("start") ? "start" : "min",
+             fmt::format("the bounds [{}, {}] exclude the start value {}{}", q.min, q.max, q.start, what));
+    }
+    for (const char* bound : {"min", "max"}) {
+      const double value = std::string_view(bound) == "min" ? q.min : q.max;
+      if (friction) {
+        p.check(bound, value >= 0.0 && value <= 2.0, "a Coulomb coefficient in [0, 2] for \"friction\"", value);
+      } else if (const std::string problem = material_problem(c.base_material, q.name, value); !problem.empty()) {
+        p.fail(bound, fmt::format("the material is not valid at this bound: {}", problem));
+      }
+    }
+    p.reject_unknown_keys();
+    c.parameters.push_back(q);
+  }
+
+  // The measurements and the conditions.
+  TableReader data = t.table("data");
+  DataFile measurements;
+  if (data.has("measurements")) {
+    const std::string name = data.string("measurements", "");
+    const fs::path path = name.starts_with('/') ? fs::path(name) : file.parent_path() / name;
+    std::ifstream m(path);
+    if (!m) data.fail("measurements", fmt::format("cannot read the measurement file {}", path.string()));
+    std::stringstream text;
+    text << m.rdbuf();
+    c.measurements_source = path.string();
+    measurements = read_data_file(text.str(), c.measurements_source);
+  } else {
+    c.measurements_source = kBuiltinForcesFile;
+    measurements = read_data_file(builtin_forces_csv, c.measurements_source);
+  }
+  const std::vector<MeasuredForces> rows = read_measured_forces(measurements);
+  const auto select = [&](const char* key, std::vector<MeasuredForces>& into) {
+    for (TableReader& s : data.array_of_tables(key)) {
+      s.require_key("h_mm", "uncut chip thickness of a row of the measurement file, mm");
+      s.require_key("vc_m_per_min", "cutting speed of a row of the measurement file, m/min");
+      const double h = s.number("h_mm", 0.0), vc = s.number("vc_m_per_min", 0.0);
+      s.reject_unknown_keys();
+      const MeasuredForces* found = nullptr;
+      for (const MeasuredForces& r : rows)
+        if (std::abs(r.h_mm - h) < 1e-9 && std::abs(r.vc_m_per_min - vc) < 1e-6) found = &r;
+      if (!found)
+        s.fail("vc_m_per_min", fmt::format("no row with h_mm = {} and vc_m_per_min = {} in {}", h, vc,
+                                           c.measurements_source));
+      for (const auto* list : {&c.training, &c.held_back})
+        for (const MeasuredForces& r : *list)
+          if (r.line == found->line)
+            s.fail("vc_m_per_min", fmt::format("the condition h_mm = {}, vc_m_per_min = {} is selected twice", h, vc));
+      into.push_back(*found);
+    }
+  };
+  data.require_key("training", "the training conditions: [{h_mm = 0.1, vc_m_per_min = 100.0}, ...]");
+  select("training", c.training);
+  if (c.training.empty())
+    data.fail("training", "empty training set: select at least one condition of the measurement file");
+  select("held_back", c.held_back);
+  data.reject_unknown_keys();
+
+  // The objective.
+  if (auto o = t.optional_table("objective")) {
+    c.weight_fc = o->number("weight_Fc", c.weight_fc);
+    c.weight_ft = o->number("weight_Ft", c.weight_ft);
+    c.weight_chip_thickness = o->number("weight_chip_thickness", c.weight_chip_thickness);
+    for (const char* k : {"weight_Fc", "weight_Ft", "weight_chip_thickness"})
+      o->check(k, o->number(k, 0.0) >= 0.0, ">= 0", o->number(k, 0.0));
+    o->check("weight_Fc", c.weight_fc + c.weight_ft + c.weight_chip_thickness > 0.0,
+             "such that at least one weight is positive", c.weight_fc);
+    c.width_of_cut_mm = o->number("width_of_cut_mm", c.width_of_cut_mm);
+    o->check("width_of_cut_mm", c.width_of_cut_mm > 0.0, "a positive width (mm)", c.width_of_cut_mm);
+    o->reject_unknown_keys();
+  }
+
+  // The optimizer.
+  if (auto o = t.optional_table("optimizer")) {
+    c.global_algorithm = o->string("global", c.global_algorithm);
+    c.local_algorithm = o->string("local", c.local_algorithm);
+    c.evaluations = static_cast<int>(o->integer("evaluations", c.evaluations));
+    o->check("evaluations", c.evaluations >= 1 && c.evaluations <= 100000, "an integer from 1 to 100000",
+             c.evaluations);
+    c.global_evaluations = static_cast<int>(o->integer("global_evaluations", std::min(c.global_evaluations, c.evaluations)));
+    o->check("global_evaluations", c.global_evaluations >= 0 && c.global_evaluations <= c.evaluations,
+             fmt::format("an integer from 0 to evaluations ({})", c.evaluations), c.global_evaluations);
+    c.seed = static_cast<unsigned>(o->integer("seed", c.seed));
+    if (c.global_algorithm != "none") algorithm(*o, "global", c.global_algorithm, "GN_");
+    if (c.local_algorithm != "none") algorithm(*o, "local", c.local_algorithm, "LN_");
+    if (c.global_algorithm == "none" && c.local_algorithm == "none")
+      o->fail("local", "both stages are \"none\": name at least one algorithm");
+    o->reject_unknown_keys();
+  }
+  if (c.global_algorithm == "none") c.global_evaluations = 0;
+  if (c.local_algorithm == "none") c.global_evaluations = c.evaluations;
+
+  t.reject_unknown_keys();
+  return c;
+}
+
+}  // namespace mpmcut

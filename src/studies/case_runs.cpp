@@ -1,0 +1,339 @@
+#include "studies/case_runs.hpp"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <thread>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "io/atomic_file.hpp"
+
+namespace mpmcut {
+
+namespace {
+
+using json = nlohmann::json;
+namespace fs = std::filesystem;
+
+volatile std::sig_atomic_t g_stop_signals = 0;
+void on_stop_signal(int) { g_stop_signals = g_stop_signals + 1; }
+
+std::string self_executable() {
+  std::error_code ec;
+  const fs::path p = fs::read_symlink("/proc/self/exe", ec);
+  return ec ? std::string("/proc/self/exe") : p.string();
+}
+
+// fork + exec of this program in a process group of its own (so that a Ctrl-C at the terminal reaches
+// only the sweep, which passes it on exactly once: a run stops with a checkpoint on the first SIGINT
+// and exits at once on the second).
+pid_t spawn_child(const std::string& exe, const ChildRun& run) {
+  std::vector<std::string> argv{exe};
+  argv.insert(argv.end(), run.args.begin(), run.args.end());
+  std::vector<char*> c_argv;
+  for (std::string& a : argv) c_argv.push_back(a.data());
+  c_argv.push_back(nullptr);
+  std::cout.flush();
+  std::cerr.flush();
+  const pid_t parent = getpid();
+  const pid_t pid = fork();
+  if (pid != 0) return pid;
+  setpgid(0, 0);
+  // If the sweep itself dies (even by SIGKILL) its runs get SIGTERM: they checkpoint and stop
+  // instead of running on as orphans (docs/reliability.md, "Signals").
+  prctl(PR_SET_PDEATHSIG, SIGTERM);
+  if (getppid() != parent) _exit(130);  // the sweep died before prctl took effect
+  const int in = open("/dev/null", O_RDONLY);
+  const int log = open(run.log_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  if (in >= 0) dup2(in, STDIN_FILENO);
+  if (log >= 0) {
+    dup2(log, STDOUT_FILENO);
+    dup2(log, STDERR_FILENO);
+  }
+  signal(SIGINT, SIG_DFL);
+  signal(SIGTERM, SIG_DFL);
+  execv(c_argv[0], c_argv.data());
+  _exit(127);
+}
+
+std::string exit_text(int code) {
+  if (code == 0) return "complete";
+  if (code == 130) return "interrupted";
+  if (code == 127) return "could not start";
+  if (code > 128) return fmt::format("killed by signal {}", code - 128);
+  return fmt::format("failed (exit status {})", code);
+}
+
+std::string last_lines(const fs::path& file, int count) {
+  std::ifstream in(file);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) {
+    // Progress bars rewrite one line with carriage returns: keep what follows the last one.
+    if (const auto cr = line.rfind('\r'); cr != std::string::npos) line = line.substr(cr + 1);
+    if (!line.empty()) lines.push_back(line);
+  }
+  std::string out;
+  for (std::size_t i = lines.size() > std::size_t(count) ? lines.size() - count : 0; i < lines.size(); ++i)
+    out += (out.empty() ? "" : " | ") + lines[i];
+  return out;
+}
+
+std::optional<double> number_of(const json& v) {
+  if (v.is_number()) return v.get<double>();
+  if (v.is_object()) {
+    for (const char* k : {"mean", "value"})
+      if (v.contains(k) && v[k].is_number()) return v[k].get<double>();
+  }
+  return std::nullopt;
+}
+
+// The analysis (mpmcut analyze) names its results with units in the keys; accept the stems below with any
+// of the given unit suffixes, in `obj` or one level down (e.g. chip.segmentation.pitch_m).
+std::optional<double> find_quantity(const json& obj, const std::vector<std::string>& stems,
+                                    const std::vector<std::pair<std::string, double>>& units) {
+  if (!obj.is_object()) return std::nullopt;
+  for (const std::string& stem : stems)
+    for (const auto& [suffix, factor] : units)
+      if (obj.contains(stem + suffix))
+        if (auto x = number_of(obj[stem + suffix])) return *x * factor;
+  for (const auto& [key, value] : obj.items())
+    if (value.is_object())
+      if (auto x = find_quantity(value, stems, units)) return x;
+  return std::nullopt;
+}
+
+std::string find_text(const json& obj, const std::vector<std::string>& keys) {
+  if (!obj.is_object()) return {};
+  for (const std::string& k : keys)
+    if (obj.contains(k) && obj[k].is_string()) return obj[k].get<std::string>();
+  return {};
+}
+
+// Mean raw forces over the last half of the tool travel: the fallback when the run ended before its
+// steady window began (short test and --quick cuts). Says so in CaseResult::force_basis.
+bool last_half_means(const fs::path& forces_csv, double& fc, double& ft) {
+  std::ifstream in(forces_csv);
+  std::string header;
+  if (!std::getline(in, header)) return false;
+  std::vector<std::string> names;
+  for (std::stringstream ss(header); std::getline(ss, header, ',');) names.push_back(header);
+  const auto column = [&](std::initializer_list<const char*> candidates) -> int {
+    for (const char* c : candidates)
+      for (std::size_t i = 0; i < names.size(); ++i)
+        if (names[i] == c) return static_cast<int>(i);
+    return -1;
+  };
+  const int ic = column({"cutting_force_raw_N_per_mm", "cutting_force_N_per_mm"});
+  const int it = column({"thrust_force_raw_N_per_mm", "thrust_force_N_per_mm"});
+  const int id = column({"tool_displacement_m", "time_s"});
+  if (ic < 0 || it < 0 || id < 0) return false;
+  std::vector<std::array<double, 3>> rows;
+  for (std::string line; std::getline(in, line);) {
+    std::vector<double> v;
+    for (std::stringstream ss(line); std::getline(ss, line, ',');) v.push_back(std::strtod(line.c_str(), nullptr));
+    if (v.size() == names.size()) rows.push_back({std::abs(v[id]), v[ic], v[it]});
+  }
+  if (rows.size() < 4) return false;
+  const double half = 0.5 * rows.back()[0];
+  double sc = 0, st = 0;
+  int n = 0;
+  for (const auto& r : rows)
+    if (r[0] >= half) sc += r[1], st += r[2], ++n;
+  if (n == 0) return false;
+  fc = sc / n;
+  ft = st / n;
+  return true;
+}
+
+std::string csv_cell(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) q += (c == '"') ? std::string("\"\"") : std::string(1, c == '\n' ? ' ' : c);
+  return q + "\"";
+}
+
+}  // namespace
+
+bool run_children(std::vector<ChildRun>& runs, int jobs, bool print_progress) {
+  g_stop_signals = 0;
+  struct sigaction action {}, old_int{}, old_term{};
+  action.sa_handler = on_stop_signal;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, &old_int);
+  sigaction(SIGTERM, &action, &old_term);
+
+  const std::string exe = self_executable();
+  using clock = std::chrono::steady_clock;
+  std::map<pid_t, std::pair<std::size_t, clock::time_point>> running;
+  std::size_t next = 0, finished = 0;
+  int forwarded = 0;
+  jobs = std::max(1, jobs);
+  while (true) {
+    while (g_stop_signals == 0 && static_cast<int>(running.size()) < jobs && next < runs.size()) {
+      const pid_t pid = spawn_child(exe, runs[next]);
+      if (pid < 0) {
+        runs[next].exit_code = 127;
+        ++next;
+        continue;
+      }
+      running[pid] = {next++, clock::now()};
+    }
+    if (running.empty()) break;
+    if (g_stop_signals > forwarded) {
+      forwarded = g_stop_signals;
+      const int sig = forwarded == 1 ? SIGINT : SIGKILL;
+      if (print_progress)
+        std::cerr << (sig == SIGINT ? "\ninterrupted: stopping the running cases (they write a checkpoint; "
+                                      "Ctrl-C again to kill them)\n"
+                                    : "\nkilling the running cases\n");
+      for (const auto& [pid, info] : running) kill(-pid, sig);
+    }
+    bool reaped = false;
+    for (auto it = running.begin(); it != running.end();) {
+      int status = 0;
+      const pid_t r = waitpid(it->first, &status, WNOHANG);
+      if (r == 0 || (r < 0 && errno == EINTR)) {
+        ++it;
+        continue;
+      }
+      ChildRun& run = runs[it->second.first];
+      run.exit_code = r < 0 ? 127 : WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+      run.wall_time_s = std::chrono::duration<double>(clock::now() - it->second.second).count();
+      ++finished;
+      if (print_progress)
+        std::cout << fmt::format("[{}/{}] {}: {} ({:.1f} s){}\n", finished, runs.size(), run.name,
+                                 exit_text(run.exit_code), run.wall_time_s,
+                                 run.exit_code == 0 ? "" : ", log: " + run.log_file.string())
+                  << std::flush;
+      it = running.erase(it);
+      reaped = true;
+    }
+    if (!reaped) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  sigaction(SIGINT, &old_int, nullptr);
+  sigaction(SIGTERM, &old_term, nullptr);
+  return g_stop_signals == 0;
+}
+
+CaseResult read_case_result(const fs::path& dir, const fs::path& log_file, int exit_code) {
+  CaseResult r;
+  json summary;
+  {
+    std::ifstream in(dir / "summary.json");
+    if (in) summary = json::parse(in, nullptr, false);
+  }
+  if (!summary.is_object()) {
+    r.status = exit_code == -1 ? "not run" : "failed";
+    r.message = exit_code == -1 ? "interrupted before it started"
+                                : fmt::format("{}, no summary.json: {}", exit_text(exit_code), last_lines(log_file, 2));
+    return r;
+  }
+  r.status = find_text(summary, {"status"});
+  if (r.status.empty()) r.status = exit_code == 0 ? "complete" : "failed";
+  for (const char* k : {"message", "error", "failure"})
+    if (summary.contains(k) && summary[k].is_string()) r.message = summary[k].get<std::string>();
+  if (summary.contains("messages") && summary["messages"].is_array())
+    for (const json& m : summary["messages"])
+      if (m.is_string()) r.message += (r.message.empty() ? "" : "; ") + m.get<std::string>();
+  if (r.status != "complete" && r.message.empty()) r.message = last_lines(log_file, 2);
+
+  r.cutting_force_N_per_mm = summary.contains("mean_cutting_force_N_per_mm")
+                                 ? number_of(summary["mean_cutting_force_N_per_mm"]) : std::nullopt;
+  r.thrust_force_N_per_mm = summary.contains("mean_thrust_force_N_per_mm")
+                                ? number_of(summary["mean_thrust_force_N_per_mm"]) : std::nullopt;
+  if (r.cutting_force_N_per_mm && r.thrust_force_N_per_mm) {
+    r.force_basis = "steady window";
+  } else if (double fc = 0, ft = 0; last_half_means(dir / "forces.csv", fc, ft)) {
+    r.cutting_force_N_per_mm = fc;
+    r.thrust_force_N_per_mm = ft;
+    r.force_basis = "last half of the cut (no steady window)";
+  }
+  if (summary.contains("max_temperature_K")) r.max_temperature_K = number_of(summary["max_temperature_K"]);
+  if (summary.contains("wall_time_s")) r.wall_time_s = number_of(summary["wall_time_s"]);
+  if (summary.contains("cell_size_m"))
+    if (auto h = number_of(summary["cell_size_m"])) r.cell_size_um = *h * 1e6;
+  if (summary.contains("mass_scaling") && summary["mass_scaling"].contains("factor"))
+    r.mass_scaling_factor = number_of(summary["mass_scaling"]["factor"]);
+  // The tool's work and where it went (energy_J_per_m; the tool is the only rigid body of a cut).
+  if (summary.contains("energy_J_per_m") && summary["energy_J_per_m"].is_object()) {
+    const json& e = summary["energy_J_per_m"];
+    const auto get = [&](const char* k) { return e.contains(k) ? number_of(e[k]) : std::nullopt; };
+    r.tool_work_J_per_m = get("external_work");
+    r.plastic_work_J_per_m = get("plastic_work");
+    r.damage_J_per_m = get("damage_dissipation");
+    r.friction_J_per_m = get("friction_work");
+    const auto kinetic = get("kinetic"), elastic = get("elastic"), viscous = get("viscous_dissipation");
+    if (kinetic && elastic) r.kinetic_elastic_J_per_m = *kinetic + *elastic;
+    if (r.tool_work_J_per_m && r.plastic_work_J_per_m && r.damage_J_per_m && r.friction_J_per_m && r.kinetic_elastic_J_per_m)
+      r.unaccounted_J_per_m = *r.tool_work_J_per_m - *r.plastic_work_J_per_m - *r.damage_J_per_m - *r.friction_J_per_m -
+                              *r.kinetic_elastic_J_per_m - viscous.value_or(0.0);
+  }
+
+  if (summary.contains("temperature") && summary["temperature"].is_object()) {
+    const json& t = summary["temperature"];
+    if (t.contains("primary_shear_zone")) r.shear_zone_max_K = find_quantity(t["primary_shear_zone"], {"max"}, {{"_K", 1.0}});
+    if (t.contains("tool_chip_interface")) r.tool_chip_max_K = find_quantity(t["tool_chip_interface"], {"max"}, {{"_K", 1.0}});
+  }
+  if (summary.contains("chip") && summary["chip"].is_object()) {
+    const json& chip = summary["chip"];
+    r.chip_classification = find_text(chip, {"classification", "chip_type", "type", "morphology", "class"});
+    r.segmentation_degree = find_quantity(chip, {"segmentation_degree", "degree_of_segmentation", "mean_segmentation_degree"},
+                                          {{"", 1.0}, {"_1", 1.0}});
+    r.pitch_um = find_quantity(chip, {"pitch", "segment_pitch", "mean_pitch", "segmentation_pitch"},
+                               {{"_um", 1.0}, {"_m", 1e6}, {"_mm", 1e3}});
+    r.frequency_kHz = find_quantity(chip, {"segmentation_frequency", "frequency", "segment_frequency"},
+                                    {{"_kHz", 1.0}, {"_Hz", 1e-3}, {"_MHz", 1e3}});
+    r.chip_thickness_ratio = find_quantity(chip, {"chip_thickness_ratio"}, {{"", 1.0}});
+  }
+  return r;
+}
+
+std::string format_number(const std::optional<double>& x, int digits) {
+  if (!x || !std::isfinite(*x)) return "";
+  return fmt::format("{:.{}g}", *x, digits);
+}
+
+void TextTable::write_csv(const fs::path& file) const {
+  write_file_atomically(file, [&](std::ostream& out) {
+    for (std::size_t i = 0; i < columns.size(); ++i) out << (i ? "," : "") << csv_cell(columns[i]);
+    out << "\n";
+    for (const auto& row : rows) {
+      for (std::size_t i = 0; i < row.size(); ++i) out << (i ? "," : "") << csv_cell(row[i]);
+      out << "\n";
+    }
+  });
+}
+
+std::string TextTable::markdown() const {
+  const auto& head = headings.size() == columns.size() ? headings : columns;
+  std::string out = "|";
+  for (const auto& h : head) out += " " + h + " |";
+  out += "\n|";
+  for (std::size_t i = 0; i < head.size(); ++i) out += "---|";
+  out += "\n";
+  for (const auto& row : rows) {
+    out += "|";
+    for (std::string cell : row) {
+      for (char& c : cell)
+        if (c == '|' || c == '\n') c = '/';
+      out += " " + cell + " |";
+    }
+    out += "\n";
+  }
+  return out;
+}
+
+}  // namespace mpmcut

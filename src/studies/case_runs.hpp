@@ -1,0 +1,63 @@
+#pragma once
+// The runs of a study (sweep, validate, calibrate): each one a separate process of this same program,
+// `mpmcut run CASE --out DIR ...`, so that a crashing case cannot take the study down and a case runs
+// exactly as it would on its own. Here: the local process pool and the reading of a run's results;
+// studies/task_farm.hpp hands the same runs to MPI ranks instead when started under mpirun/srun.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace mpmcut {
+
+// One child run: `mpmcut <args...>`, stdout and stderr into log_file.
+struct ChildRun {
+  std::string name;                 // for progress lines, e.g. "v20mps_h0.1mm"
+  std::vector<std::string> args;    // after the program name, e.g. {"run", "case.toml", "--out", ...}
+  std::filesystem::path log_file;
+  int exit_code = -1;               // -1: not run (interrupted before it started)
+  double wall_time_s = 0.0;
+};
+
+// Runs the children, at most `jobs` at a time, each as /proc/self/exe in its own process group.
+// SIGINT/SIGTERM to this process are passed on once to the running children (which checkpoint and stop);
+// a second one kills them. Returns false if interrupted (children not started keep exit_code -1).
+bool run_children(std::vector<ChildRun>& runs, int jobs, bool print_progress);
+
+// The headline results of one run directory, as far as summary.json (and forces.csv) give them.
+struct CaseResult {
+  std::string status;               // summary.json status, or "failed" / "not run"
+  std::string message;              // why it failed (summary message or the end of the log)
+  std::optional<double> cutting_force_N_per_mm, thrust_force_N_per_mm;
+  std::string force_basis;          // "steady window" | "last half of the cut (no steady window)" | ""
+  std::optional<double> max_temperature_K;
+  std::optional<double> shear_zone_max_K, tool_chip_max_K;  // summary.json "temperature" (mpmcut analyze)
+  std::string chip_classification;  // from summary.json "chip" (mpmcut analyze); blank if absent
+  std::optional<double> segmentation_degree, pitch_um, frequency_kHz;
+  std::optional<double> chip_thickness_ratio;  // r = t0 / t_c from the chip analysis
+  std::optional<double> wall_time_s;
+  std::optional<double> cell_size_um, mass_scaling_factor;
+  // Energy ledger at the end (summary.json energy_J_per_m): the tool's work and where it went; the
+  // unaccounted part is the numerical remainder (FLIP/PIC, removed particles, safeguards).
+  std::optional<double> tool_work_J_per_m, plastic_work_J_per_m, damage_J_per_m, friction_J_per_m,
+      kinetic_elastic_J_per_m, unaccounted_J_per_m;
+};
+
+// Reads summary.json of `dir` (and forces.csv for the fallback mean: when the run ended before its steady
+// window, the mean of the raw forces over the last half of the tool travel). `log_file` and `exit_code`
+// explain a missing or failed summary.
+CaseResult read_case_result(const std::filesystem::path& dir, const std::filesystem::path& log_file, int exit_code);
+
+// A table of text cells written as CSV (cells with commas or quotes quoted) and as Markdown.
+struct TextTable {
+  std::vector<std::string> columns;               // CSV header: machine names with units
+  std::vector<std::string> headings;              // Markdown header: for people (same count)
+  std::vector<std::vector<std::string>> rows;
+  void write_csv(const std::filesystem::path& file) const;
+  std::string markdown() const;
+};
+
+// Short number text for tables: "" for none, else up to `digits` significant digits.
+std::string format_number(const std::optional<double>& x, int digits = 4);
+
+}  // namespace mpmcut

@@ -1,0 +1,147 @@
+#include "studies/measured_conditions.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "analysis/chip_analysis.hpp"
+#include "io/input_error.hpp"
+
+namespace mpmcut {
+
+DataFile read_data_file(std::string_view text, const std::string& source) {
+  DataFile f;
+  f.source = source;
+  std::istringstream in{std::string(text)};
+  int line_number = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++line_number;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty() || line[0] == '#') continue;
+    std::vector<std::string> cells;
+    std::string cell;
+    for (std::istringstream ss(line); std::getline(ss, cell, ',');) cells.push_back(cell);
+    if (line.back() == ',') cells.push_back("");
+    if (f.columns.empty()) {
+      f.columns = cells;
+      f.header_line = line_number;
+      continue;
+    }
+    DataFile::Row row;
+    row.line = line_number;
+    for (std::size_t i = 0; i < f.columns.size(); ++i) row.cells[f.columns[i]] = i < cells.size() ? cells[i] : "";
+    f.rows.push_back(std::move(row));
+  }
+  return f;
+}
+
+void DataFile::require_columns(const std::vector<std::string>& names) const {
+  std::string missing;
+  for (const std::string& n : names)
+    if (std::find(columns.begin(), columns.end(), n) == columns.end()) missing += (missing.empty() ? "'" : ", '") + n + "'";
+  if (missing.empty()) return;
+  std::string have;
+  for (const std::string& c : columns) have += (have.empty() ? "" : ", ") + c;
+  throw InputError(fmt::format("{}:{}: missing column(s) {} (the header line has: {})", source,
+                               header_line > 0 ? header_line : 1, missing, have.empty() ? "no header line" : have));
+}
+
+double DataFile::number(const Row& row, const std::string& column) const {
+  const auto it = row.cells.find(column);
+  if (it == row.cells.end() || it->second.empty()) return NAN;
+  const char* begin = it->second.c_str();
+  char* end = nullptr;
+  const double x = std::strtod(begin, &end);
+  if (end == begin || *end != '\0')
+    throw InputError(fmt::format("{}:{}: column '{}': must be a number, got \"{}\"", source, row.line, column, it->second));
+  return x;
+}
+
+const std::vector<std::string>& required_force_columns() {
+  static const std::vector<std::string> columns{"h_mm", "vc_m_per_min", "Fc_mean_N", "Ff_mean_N", "edge_radius_um"};
+  return columns;
+}
+
+std::vector<MeasuredForces> read_measured_forces(const DataFile& file) {
+  file.require_columns(required_force_columns());
+  std::vector<MeasuredForces> out;
+  for (const DataFile::Row& r : file.rows) {
+    MeasuredForces m;
+    m.line = r.line;
+    for (const std::string& key : required_force_columns())
+      if (!std::isfinite(file.number(r, key)))
+        throw InputError(fmt::format("{}:{}: column '{}': a value is needed in every row", file.source, r.line, key));
+    m.h_mm = file.number(r, "h_mm");
+    m.vc_m_per_min = file.number(r, "vc_m_per_min");
+    m.fc_N = file.number(r, "Fc_mean_N");
+    m.ff_N = file.number(r, "Ff_mean_N");
+    m.edge_radius_um = file.number(r, "edge_radius_um");
+    const auto or_mean = [&](const char* key, double mean) {
+      const double x = file.number(r, key);
+      return std::isfinite(x) ? x : mean;
+    };
+    m.fc_min_N = or_mean("Fc_min_N", m.fc_N);
+    m.fc_max_N = or_mean("Fc_max_N", m.fc_N);
+    m.ff_min_N = or_mean("Ff_min_N", m.ff_N);
+    m.ff_max_N = or_mean("Ff_max_N", m.ff_N);
+    const double n = file.number(r, "n_tests");
+    m.n_tests = std::isfinite(n) ? static_cast<int>(n) : 1;
+    if (const double t = file.number(r, "chip_thickness_um"); std::isfinite(t) && t > 0) m.chip_thickness_um = t;
+    const auto status = r.cells.find("status");
+    m.status = status == r.cells.end() || status->second.empty() ? "ok" : status->second;
+    for (const auto& [key, value] : {std::pair{"h_mm", m.h_mm}, {"vc_m_per_min", m.vc_m_per_min},
+                                     {"Fc_mean_N", m.fc_N}, {"edge_radius_um", m.edge_radius_um}})
+      if (!(value > 0))
+        throw InputError(fmt::format("{}:{}: column '{}': must be positive, got {}", file.source, r.line, key, value));
+    out.push_back(m);
+  }
+  return out;
+}
+
+int chip_cells_per_feed(int cells_per_feed) {
+  return std::max(cells_per_feed, static_cast<int>(std::ceil(ChipThresholds{}.resolved_cells_per_feed)));
+}
+
+std::string condition_case_text(const CuttingCondition& c, const ConditionRunSettings& o) {
+  const double h = c.h_mm * 1e-3;
+  const int cells_per_feed = c.kind == "chip" ? chip_cells_per_feed(o.cells_per_feed) : o.cells_per_feed;
+  const double cell = o.quick ? 0.25 * h : h / cells_per_feed;
+  // quick: four cells of tool travel (pipeline check, numbers not meaningful); full: 0.4 mm, long enough
+  // for the preset's steady window (after >= 3 t0 of travel and 40 % of the cut).
+  const double cut = o.quick ? 4.0 * cell : std::max(0.4e-3, 6.0 * h);
+  std::string s;
+  s += fmt::format("title = \"{} {}: V = {:g} m/s ({:g} m/min), h = {:g} mm\"\n", o.purpose, c.id, c.speed_m_per_s,
+                   c.speed_m_per_s * 60.0, c.h_mm);
+  std::string material = o.material;
+  if (!o.material_overrides.empty()) {
+    // The trial set: the library set with the changed keys; each value written so that it reads back as exactly the
+    // optimizer's value.
+    material = "trial";
+    s += "\n[[material]]\n";
+    s += "name = \"trial\"\n";
+    s += fmt::format("library = \"{}\"\n", o.material);
+    for (const auto& [key, value] : o.material_overrides) s += fmt::format("{} = {}\n", key, value);  // {} is the shortest text that reads back exactly
+    s += "\n";
+  }
+  s += "[cutting]\n";
+  s += fmt::format("material = \"{}\"  # {}\n", material, o.material_note);
+  s += fmt::format("cutting_speed = {}\n", c.speed_m_per_s);
+  s += fmt::format("uncut_chip_thickness = {}\n", h);
+  s += "width_of_cut = 1e-3  # ASSUMPTION b = 1 mm: the width of cut is not in the Klippel data file\n";
+  s += fmt::format("cut_length = {}\n", cut);
+  s += "rake_angle_deg = 0.0       # ASSUMPTION: not in the data file\n";
+  s += "clearance_angle_deg = 11.0 # ASSUMPTION: not in the data file\n";
+  s += fmt::format("edge_radius = {}  # {}\n", c.edge_radius_um * 1e-6,
+                   c.kind == "forces" ? "measured mean r_n of the tests" : "preset default: not stated in the source");
+  s += fmt::format("friction = {}  # {}\n", o.friction, o.friction_note);
+  s += fmt::format("cell_size = {}\n", cell);
+  s += "mass_scaling = \"auto\"     # workpiece inertia up to an inertia number of 0.002 (docs/mass_scaling.md)\n";
+  s += fmt::format("particles_per_cell = {}\n", o.quick ? 1 : 2);
+  s += fmt::format("snapshots = {}\n", o.snapshots > 0 ? o.snapshots : o.quick ? 2 : 20);
+  return s;
+}
+
+}  // namespace mpmcut

@@ -1,0 +1,113 @@
+"""End to end: `mpmcut calibrate` on quick (coarse, short) runs, its outputs, resume and determinism.
+
+usage: /usr/bin/python3 test_calibrate_quick.py MPMCUT_BINARY SCRATCH_DIR
+Checks, with tests/python/data/calibration_quick.toml (jc_A and friction free, 1 training and 1 held-back
+condition, a budget of 3 evaluations: 2 of CRS2, then BOBYQA from the best point, which is cached):
+  - exit 0; evaluations.csv has 3 rows; its objective column equals the weighted RMS relative error
+    recomputed here from the per-condition forces and the measured means of the data file (b = 1 mm);
+  - the local stage's point is the best global one (replayed from the cache, not run again);
+  - best_material.toml is a [[material]] with library, the free material key, and its provenance;
+  - calibration.md has the training and the held-back errors; convergence.png and parity.png exist;
+  - resume after a kill -9 (cache.jsonl cut to its first evaluation plus half a line): one evaluation
+    runs again, the other replays, and evaluations.csv comes out identical (deterministic for a seed);
+  - a second start over a complete directory runs nothing (neither evaluations nor held-back runs).
+"""
+import csv
+import math
+import os
+import shutil
+import subprocess
+import sys
+import tomllib
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plot_checks import check_png, fail  # noqa: E402
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+CONFIG = os.path.join(HERE, "data", "calibration_quick.toml")
+DATA = os.path.join(HERE, "..", "..", "data", "experiments", "ti64_klippel2024_orthogonal_forces.csv")
+
+
+def calibrate(binary, out, *extra):
+    p = subprocess.run([binary, "calibrate", CONFIG, "--out", out, "--jobs", "2", *extra],
+                       capture_output=True, text=True, timeout=300)
+    print(p.stdout, p.stderr, sep="\n")
+    if p.returncode != 0:
+        fail(f"calibrate exit status {p.returncode}")
+    return p.stdout
+
+
+def read(path):
+    with open(path) as f:
+        return f.read()
+
+
+def main(binary, scratch):
+    shutil.rmtree(scratch, ignore_errors=True)
+    os.makedirs(scratch)
+    out = os.path.join(scratch, "cal")
+    calibrate(binary, out)
+    with open(os.path.join(out, "evaluations.csv"), newline="") as f:
+        rows = list(csv.DictReader(f))
+    if [r["stage"] for r in rows] != ["global", "global", "local"]:
+        fail(f"stages: {[r['stage'] for r in rows]}")
+    with open(DATA) as f:
+        measured = [m for m in csv.DictReader(line for line in f if not line.startswith("#"))
+                    if float(m["h_mm"]) == 0.1 and float(m["vc_m_per_min"]) == 381.3][0]
+    fc_m, ft_m = float(measured["Fc_mean_N"]), float(measured["Ff_mean_N"])  # N/mm with b = 1 mm
+    for r in rows:
+        fc = float(r["h0.1mm_vc381.3mpmin_Fc_N_per_mm"])
+        ft = float(r["h0.1mm_vc381.3mpmin_Ft_N_per_mm"])
+        j = math.sqrt((1.0 * ((fc - fc_m) / fc_m) ** 2 + 0.5 * ((ft - ft_m) / ft_m) ** 2) / 1.5)
+        # The forces in the CSV are rounded to 6 digits.
+        if abs(j - float(r["objective"])) > 1e-4 * j:
+            fail(f"evaluation {r['evaluation']}: objective {r['objective']} != recomputed {j}")
+        if not (700e6 <= float(r["jc_A"]) <= 1000e6 and 0.1 <= float(r["friction"]) <= 0.6):
+            fail(f"evaluation {r['evaluation']} outside the bounds: {r}")
+    if float(rows[0]["jc_A"]) != 862e6 or float(rows[0]["friction"]) != 0.35:
+        fail(f"the first point is not the start (ti64-cutting's jc_A, friction 0.35): {rows[0]}")
+    best = min(rows[:2], key=lambda r: float(r["objective"]))
+    if (rows[2]["jc_A"], rows[2]["friction"]) != (best["jc_A"], best["friction"]):
+        fail("the local stage did not start from the best global point")
+    with open(os.path.join(out, "best_material.toml"), "rb") as f:
+        toml = tomllib.load(f)
+    m = toml["material"][0]
+    if m["name"] != "ti64-test-fit" or m["library"] != "ti64-cutting" or m["jc_A"] != float(best["jc_A"]):
+        fail(f"best_material.toml: {m}")
+    text = read(os.path.join(out, "best_material.toml"))
+    for word in ("Data:", "Objective:", "Budget:", "friction = ", "seed 7"):
+        if word not in text:
+            fail(f"best_material.toml has no '{word}'")
+    md = read(os.path.join(out, "calibration.md"))
+    for word in ("| training | h0.1mm_vc381.3mpmin", "| held back | h0.1mm_vc150mpmin", "b = 1 mm ASSUMED", "quick"):
+        if word not in md:
+            fail(f"calibration.md has no '{word}'")
+    for name in ("convergence.png", "parity.png"):
+        check_png(os.path.join(out, name))
+    table = read(os.path.join(out, "evaluations.csv"))
+
+    # kill -9 during the second evaluation: the cache holds the first and half a line.
+    cache = os.path.join(out, "cache.jsonl")
+    lines = read(cache).splitlines(keepends=True)
+    if len(lines) != 3:
+        fail(f"cache.jsonl has {len(lines)} lines, expected 3 (2 evaluations, the third point is a replay; the "
+             "held-back runs)")
+    with open(cache, "w") as f:
+        f.write(lines[0] + lines[1][: len(lines[1]) // 2])
+    os.remove(os.path.join(out, "evaluations.csv"))
+    log = calibrate(binary, out, "--no-plots")
+    if "3 evaluations (1 run now, 2 from the cache)" not in log:
+        fail("the resumed calibration did not run exactly the lost evaluation")
+    if read(os.path.join(out, "evaluations.csv")) != table:
+        fail("evaluations.csv differs after the resume: not deterministic")
+    log = calibrate(binary, out, "--no-plots")
+    if "(0 run now, 3 from the cache)" not in log or "held-back conditions at the best set" in log:
+        fail("a complete calibration ran evaluations or the held-back runs again")
+    print("PASS")
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 3:
+        print(__doc__)
+        sys.exit(2)
+    main(sys.argv[1], sys.argv[2])

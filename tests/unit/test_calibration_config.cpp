@@ -1,0 +1,121 @@
+// Bad calibration input is an InputError naming the file, line and key, before anything runs
+// (studies/calibration.hpp, read_calibration_config).
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "io/input_error.hpp"
+#include "studies/calibration.hpp"
+
+namespace mpmcut {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A small measurement file in the layout of data/experiments (comment, header, two rows).
+constexpr const char* kMeasurements =
+    "# test data\n"
+    "h_mm,vc_m_per_min,Fc_mean_N,Ff_mean_N,edge_radius_um,chip_thickness_um\n"
+    "0.1,100,200.8,128.5,34.4,180.3\n"
+    "0.1,150,197.4,141.4,39.3,\n";
+
+const std::string kParameter = "[[parameter]]\nname = \"jc_A\"\nmin = 700e6\nmax = 1000e6\n";
+const std::string kData = "[data]\ntraining = [{h_mm = 0.1, vc_m_per_min = 100.0}]\n";
+
+fs::path write(const std::string& name, const std::string& text) {
+  const fs::path dir = fs::temp_directory_path() / "mpmcut_test_calibration_config";
+  fs::create_directories(dir);
+  std::ofstream(dir / name) << text;
+  return dir / name;
+}
+
+// The message of the InputError that reading `config` throws ("" if none).
+std::string error_of(const std::string& config) {
+  const fs::path file = write("calibration.toml", config);
+  try {
+    read_calibration_config(file, kMeasurements);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(CalibrationConfig, ValidConfigReadsParametersConditionsAndDefaults) {
+  const fs::path file = write("ok.toml", "name = \"fit\"\n" + kParameter +
+                                             "[[parameter]]\nname = \"friction\"\nmin = 0.1\nmax = 0.6\nlog_scale = true\n" +
+                                             kData + "held_back = [{h_mm = 0.1, vc_m_per_min = 150}]\n");
+  const CalibrationConfig c = read_calibration_config(file, kMeasurements);
+  ASSERT_EQ(c.parameters.size(), 2u);
+  EXPECT_EQ(c.parameters[0].start, 862e6);  // ti64-cutting's (Johnson 1985) jc_A
+  EXPECT_EQ(c.parameters[1].start, 0.35);   // the preset's friction
+  ASSERT_EQ(c.training.size(), 1u);
+  EXPECT_DOUBLE_EQ(c.training[0].fc_N, 200.8);
+  ASSERT_TRUE(c.training[0].chip_thickness_um.has_value());
+  ASSERT_EQ(c.held_back.size(), 1u);
+  EXPECT_FALSE(c.held_back[0].chip_thickness_um.has_value());
+  EXPECT_EQ(c.measurements_source, kBuiltinForcesFile);
+}
+
+TEST(CalibrationConfig, UnknownParameterNameIsNamedWithItsLine) {
+  const std::string e = error_of("name = \"fit\"\n[[parameter]]\nname = \"jc_Q\"\nmin = 1\nmax = 2\n" + kData);
+  EXPECT_NE(e.find("calibration.toml:3:"), std::string::npos) << e;
+  EXPECT_NE(e.find("parameter[0].name"), std::string::npos) << e;
+  EXPECT_NE(e.find("unknown parameter \"jc_Q\""), std::string::npos) << e;
+  EXPECT_NE(e.find("jc_A"), std::string::npos) << e;  // the valid keys are listed
+}
+
+TEST(CalibrationConfig, BoundsThatExcludeTheStartValue) {
+  // The base set's jc_A (862 MPa) is outside [900, 1000] MPa.
+  std::string e = error_of("name = \"fit\"\n[[parameter]]\nname = \"jc_A\"\nmin = 900e6\nmax = 1000e6\n" + kData);
+  EXPECT_NE(e.find("calibration.toml:4:"), std::string::npos) << e;
+  EXPECT_NE(e.find("parameter[0].min"), std::string::npos) << e;
+  EXPECT_NE(e.find("exclude the start value 862000000"), std::string::npos) << e;
+  // An explicit start outside the bounds is named at its own line.
+  e = error_of("name = \"fit\"\n[[parameter]]\nname = \"jc_A\"\nmin = 700e6\nmax = 1000e6\nstart = 1.2e9\n" + kData);
+  EXPECT_NE(e.find("calibration.toml:6:"), std::string::npos) << e;
+  EXPECT_NE(e.find("parameter[0].start"), std::string::npos) << e;
+}
+
+TEST(CalibrationConfig, BoundOutsideTheMaterialsValidRange) {
+  const std::string e = error_of("name = \"fit\"\n[[parameter]]\nname = \"jc_n\"\nmin = -0.1\nmax = 0.5\n" + kData);
+  EXPECT_NE(e.find("parameter[0].min"), std::string::npos) << e;
+  EXPECT_NE(e.find("jc_n"), std::string::npos) << e;
+}
+
+TEST(CalibrationConfig, EmptyTrainingSet) {
+  const std::string e = error_of("name = \"fit\"\n" + kParameter + "[data]\ntraining = []\n");
+  EXPECT_NE(e.find("calibration.toml:"), std::string::npos) << e;
+  EXPECT_NE(e.find("data.training"), std::string::npos) << e;
+  EXPECT_NE(e.find("empty training set"), std::string::npos) << e;
+}
+
+TEST(CalibrationConfig, ConditionNotInTheMeasurements) {
+  const std::string e = error_of("name = \"fit\"\n" + kParameter + "[data]\ntraining = [{h_mm = 0.1, vc_m_per_min = 99}]\n");
+  EXPECT_NE(e.find("no row with h_mm = 0.1 and vc_m_per_min = 99"), std::string::npos) << e;
+}
+
+TEST(CalibrationConfig, MeasurementFileWithMissingColumnsNamesFileLineAndColumns) {
+  write("measured.csv", "# my forces\n# second comment\nh_mm,vc_m_per_min,Fc_mean_N\n0.1,100,200\n");
+  const std::string e =
+      error_of("name = \"fit\"\n" + kParameter + "[data]\nmeasurements = \"measured.csv\"\n" +
+               "training = [{h_mm = 0.1, vc_m_per_min = 100}]\n");
+  EXPECT_NE(e.find("measured.csv:3: missing column(s) 'Ff_mean_N', 'edge_radius_um'"), std::string::npos) << e;
+}
+
+TEST(CalibrationConfig, MeasurementCellThatIsNotANumber) {
+  write("bad.csv", "h_mm,vc_m_per_min,Fc_mean_N,Ff_mean_N,edge_radius_um\n0.1,100,2OO,128,34\n");
+  const std::string e = error_of("name = \"fit\"\n" + kParameter + "[data]\nmeasurements = \"bad.csv\"\n" +
+                                 "training = [{h_mm = 0.1, vc_m_per_min = 100}]\n");
+  EXPECT_NE(e.find("bad.csv:2: column 'Fc_mean_N': must be a number, got \"2OO\""), std::string::npos) << e;
+}
+
+TEST(CalibrationConfig, UnknownOptimizerAlgorithm) {
+  const std::string e = error_of("name = \"fit\"\n" + kParameter + kData + "[optimizer]\nglobal = \"LN_BOBYQA\"\n");
+  EXPECT_NE(e.find("optimizer.global"), std::string::npos) << e;
+  EXPECT_NE(e.find("GN_"), std::string::npos) << e;
+}
+
+}  // namespace
+}  // namespace mpmcut
