@@ -63,6 +63,10 @@ RunEstimate estimate_run(const Scene& scene) {
     double c_max = 0.0;
     for (const MaterialParameters& m : scene.materials) c_max = std::max(c_max, p_wave_speed(m));
     if (c_max + v_max > 0.0) dt = scene.solver.cfl * h / (c_max + v_max);
+    // Mass scaling multiplies the inertia by f, so the wave speed, and the step with it, by sqrt(f);
+    // a target step, where given, is what the factor is chosen to reach.
+    if (scene.solver.mass_scaling_target_time_step > 0.0) dt = std::max(dt, scene.solver.mass_scaling_target_time_step);
+    else if (scene.solver.mass_scaling_factor > 1.0) dt *= std::sqrt(scene.solver.mass_scaling_factor);
     if (scene.thermal.conduction)
       for (const MaterialParameters& m : scene.materials)
         if (m.thermal_conductivity > 0.0 && m.specific_heat > 0.0)

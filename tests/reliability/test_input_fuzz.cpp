@@ -30,6 +30,7 @@ const std::vector<std::pair<std::string, std::string>> kAllowed = {
     {"citation", "\"wrong\""}, {"citation", "\"\""},
     {"solver.max_steps", "0"},                     // 0 = unlimited
     {"solver.fixed_time_step", "0"},               // 0 = from the CFL condition
+    {"solver.mass_scaling_target_time_step", "0"},  // 0 = no target
     {"solver.contact_distance_cells", "0"},        // contact only where the body is reached
     {"solver.flip_fraction", "0"},                 // pure PIC
     {"solver.remove_escaping_particles", "true"},  //
@@ -54,6 +55,7 @@ const std::vector<std::pair<std::string, std::string>> kAllowed = {
     {"jc_C", "0"}, {"jc_n", "0"}, {"jc_A", "0"}, {"jc_B", "0"},  // Johnson-Cook terms switched off
     {"jc_D1", "0"}, {"jc_D2", "0"}, {"jc_D3", "0"}, {"jc_D4", "0"}, {"jc_D5", "0"},
     {"jc_D1", "-1"}, {"jc_D2", "-1"}, {"jc_D3", "-1"}, {"jc_D4", "-1"}, {"jc_D5", "-1"},
+    {"damage_triaxiality_cutoff", "0"}, {"damage_triaxiality_cutoff", "-1"},  // a triaxiality: any sign
     {"thermal_conductivity", "0"}, {"strain_rate_smoothing_time", "0"}, {"bulk_viscosity_linear", "0"},
     {"bulk_viscosity_quadratic", "0"}, {"mg_s", "0"}, {"mg_gamma0", "0"}, {"taylor_quinney", "0"},
     {"fracture_transition_strain_rate", "0"}, {"poisson_ratio", "0"}, {"specific_heat", "0"}, {"fracture_energy", "0"},
