@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <string_view>
 
+#include "core/run_estimate.hpp"
 #include "io/input_error.hpp"
 #include "io/scene_parser.hpp"
 
@@ -12,7 +13,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   try {
     const mpmcut::Scene scene = mpmcut::parse_scene(text, "fuzz.toml");
-    (void)scene;
+    // The estimate runs on every accepted scene before allocation: it must not crash either, and
+    // its refusal is an InputError like any other.
+    mpmcut::check_run_fits(scene, mpmcut::estimate_run(scene), 1e12);
   } catch (const mpmcut::InputError&) {
     // The user's error, reported as such: fine. Anything else escapes and libFuzzer reports it.
   }

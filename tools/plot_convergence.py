@@ -5,7 +5,7 @@ usage: /usr/bin/python3 plot_convergence.py SWEEP_DIR
 Reads SWEEP_DIR/sweep.csv and writes SWEEP_DIR/convergence.png: one column per condition (speed, feed), rows
 (a) mean cutting and thrust force per unit width, (b) chip thickness ratio t0/tc and segmentation degree,
 (c) segment pitch, (d) the energy partition of the tool's work (plastic, damage, friction, kinetic + elastic,
-unaccounted), each against the number of cells across the uncut chip thickness. Cases that did not complete
+numerical: FLIP/PIC transfer, removed particles, safeguard, residual), each against the number of cells across the uncut chip thickness. Cases that did not complete
 are left out; a panel without data says so.
 """
 import os
@@ -16,7 +16,7 @@ from plot_style import plt
 
 PARTS = [("plastic_work_fraction", "plastic", "#1f4e9c"), ("damage_fraction", "damage", "#c0392b"),
          ("friction_fraction", "friction", "#2e8b57"), ("kinetic_elastic_fraction", "kinetic+elastic", "#8e44ad"),
-         ("unaccounted_fraction", "unaccounted", "#7f7f7f")]
+         ("numerical_fraction", "numerical", "#7f7f7f")]
 
 
 def series(rows, key):

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
+#include <fmt/format.h>
 
 #include "app/analyze_command.hpp"
 #include "app/bench_command.hpp"
@@ -13,11 +14,15 @@
 #include "app/calibrate_command.hpp"
 #include "app/validate_command.hpp"
 #include "app/run_case.hpp"
+#include "app/stop_signal.hpp"
+#include "core/run_estimate.hpp"
 #include "io/input_error.hpp"
 #include "io/scene_parser.hpp"
 
 int main(int argc, char** argv) {
   using namespace mpmcut;
+  // First thing: a Ctrl-C or SIGTERM while the case is still being parsed must stop the program too.
+  install_stop_handlers();
   CLI::App app{"mpmcut: material point method simulation of high-speed orthogonal metal cutting (2D plane strain)"};
   app.set_version_flag("--version", std::string("mpmcut ") + MPMCUT_VERSION);
   app.require_subcommand(1);
@@ -40,6 +45,10 @@ int main(int argc, char** argv) {
   run->add_flag("--no-progress", no_progress, "Do not print progress");
   bool no_plots = false;
   run->add_flag("--no-plots", no_plots, "Do not draw the PNG pictures at the end of a cutting run");
+  bool check_only = false;
+  run->add_flag("--check", check_only,
+                "Only parse and validate the case and estimate its memory and step count, then exit "
+                "(0: it would start; 2: input error); writes nothing");
   // Checkpoints (docs/reliability.md): a step count or a wall time.
   const auto checkpoint_check = [](const std::string& text) -> std::string {
     try {
@@ -106,6 +115,21 @@ int main(int argc, char** argv) {
     std::cerr << "error: " << e.what() << "\n";
     return kExitInputError;
   }
+  if (check_only) {
+    const RunEstimate e = estimate_run(scene);
+    const double available = available_memory_bytes();
+    try {
+      check_run_fits(scene, e, available);
+    } catch (const InputError& error) {
+      std::cerr << "error: " << error.what() << "\n";
+      return kExitInputError;
+    }
+    std::cout << fmt::format("{}: valid; about {:.3g} particles, {:.3g} grid nodes, {} of memory ({} available), "
+                             "{:.3g} steps\n",
+                             case_file.empty() ? "built-in default case" : case_file, e.particles, e.grid_nodes,
+                             format_bytes(e.bytes), format_bytes(available), e.steps);
+    return kExitComplete;
+  }
   if (out_dir.empty()) {
     const std::string name = case_file.empty() ? "default" : std::filesystem::path(case_file).stem().string();
     out_dir = "results/" + name;
@@ -129,6 +153,12 @@ int main(int argc, char** argv) {
     }
   }
   if (code < 0) code = run_case(scene, run_options);
+  // A signal that came after the last step: the results are complete, but the program stops here
+  // (no pictures) with the documented code.
+  if (stop_requested()) {
+    std::cerr << "interrupted after the run completed: results complete, pictures not drawn\n";
+    return kExitInterrupted;
+  }
   // A complete cut gets its pictures (chip fields, forces) as `mpmcut plot` draws them; a missing or
   // failing plotter is a warning, never a failed run.
   if (code == 0 && scene.cutting && !no_plots) {

@@ -1,4 +1,5 @@
 #include "app/plot_command.hpp"
+#include "app/stop_signal.hpp"
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -51,9 +52,11 @@ int run_and_wait(const std::vector<std::string>& argv, bool quiet) {
   c_argv.push_back(nullptr);
   std::cout.flush();
   std::cerr.flush();
+  const pid_t parent = getpid();
   const pid_t pid = fork();
   if (pid < 0) return 127;
   if (pid == 0) {
+    die_with_parent(parent);
     if (quiet) {
       const FILE* devnull = freopen("/dev/null", "w", stdout);
       (void)devnull;
@@ -62,10 +65,16 @@ int run_and_wait(const std::vector<std::string>& argv, bool quiet) {
     execv(c_argv[0], c_argv.data());
     _exit(127);
   }
+  // A signal now ends this program at once (app/stop_signal); the plotter goes with it.
+  register_child(pid, false);
   int status = 0;
   while (waitpid(pid, &status, 0) < 0) {
-    if (errno != EINTR) return 127;
+    if (errno != EINTR) {
+      unregister_child(pid);
+      return 127;
+    }
   }
+  unregister_child(pid);
   if (WIFEXITED(status)) return WEXITSTATUS(status);
   return 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
 }

@@ -19,6 +19,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "app/stop_signal.hpp"
+#include "core/run_estimate.hpp"
 #include "core/simulation.hpp"
 #include "io/atomic_file.hpp"
 #include "io/checkpoint.hpp"
@@ -82,34 +84,21 @@ namespace {
 // ---------------------------------------------------------------------------------------------
 // Signals
 
-// SIGINT/SIGTERM: the first asks the loop to stop after the current step (it then writes a
-// checkpoint and the outputs so far); a second one exits at once (the directory stays resumable
-// from the last checkpoint). SIGXFSZ is ignored so that a file-size limit surfaces as an EFBIG
-// write error with a message instead of killing the process.
-std::atomic<int> g_stop_requests{0};
-extern "C" void on_stop_signal(int) {
-  if (g_stop_requests.fetch_add(1) >= 1) _exit(kExitInterrupted);
-}
-
+// SIGINT/SIGTERM are handled program-wide (app/stop_signal): during set-up a signal exits at once;
+// in the step loop (DeferStops in run_to_end) the first asks the loop to stop after the current step
+// (it then writes a checkpoint and the outputs so far), a second exits at once (the directory stays
+// resumable from the last checkpoint). SIGXFSZ is ignored so that a file-size limit surfaces as an
+// EFBIG write error with a message instead of killing the process.
 struct SignalGuard {
-  struct sigaction old_int {}, old_term {}, old_xfsz {};
+  struct sigaction old_xfsz {};
   SignalGuard() {
-    g_stop_requests = 0;
-    struct sigaction sa {};
-    sa.sa_handler = on_stop_signal;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, &old_int);
-    sigaction(SIGTERM, &sa, &old_term);
+    install_stop_handlers();
     struct sigaction ignore {};
     ignore.sa_handler = SIG_IGN;
     sigemptyset(&ignore.sa_mask);
     sigaction(SIGXFSZ, &ignore, &old_xfsz);
   }
-  ~SignalGuard() {
-    sigaction(SIGINT, &old_int, nullptr);
-    sigaction(SIGTERM, &old_term, nullptr);
-    sigaction(SIGXFSZ, &old_xfsz, nullptr);
-  }
+  ~SignalGuard() { sigaction(SIGXFSZ, &old_xfsz, nullptr); }
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -127,6 +116,9 @@ std::vector<std::string> history_columns() {
           "friction_work_J_per_m",
           "viscous_dissipation_J_per_m",
           "external_work_J_per_m",
+          "transfer_dissipation_J_per_m",
+          "contact_safeguard_J_per_m",
+          "removed_energy_J_per_m",
           "momentum_x_kg_m_per_s_per_m",
           "momentum_y_kg_m_per_s_per_m",
           "max_temperature_K"};
@@ -179,7 +171,8 @@ class RunOutputs {
     const EnergyTotals& e = sim_.energy();
     const Vec2 m = sim_.total_momentum();
     history_.row({sim_.time(), static_cast<double>(sim_.step_count()), sim_.last_dt(), e.kinetic, e.elastic,
-                  e.plastic_work, e.heat, e.damage_dissipation, e.friction, e.viscous, e.external_work, m.x(), m.y(),
+                  e.plastic_work, e.heat, e.damage_dissipation, e.friction, e.viscous, e.external_work, e.transfer_dissipation, e.contact_safeguard,
+                  e.removed_energy, m.x(), m.y(),
                   sim_.max_temperature()});
   }
 
@@ -270,7 +263,16 @@ nlohmann::json summary_json(const Simulation& sim, const char* status, double wa
                          {"damage_dissipation", e.damage_dissipation},
                          {"friction_work", e.friction},
                          {"viscous_dissipation", e.viscous},
-                         {"external_work", e.external_work}};
+                         {"external_work", e.external_work},
+                         {"transfer_dissipation", e.transfer_dissipation},
+                         {"contact_safeguard", e.contact_safeguard},
+                         {"removed_energy", e.removed_energy}};
+  // initial energy + external work = the rest, term by term (docs/cutting.md, "Energy balance");
+  // the residual is what no term accounts for, relative to the energy that came in.
+  const double residual = energy_balance_residual(e);
+  j["energy_J_per_m"]["initial"] = e.initial;
+  j["energy_balance"] = {{"residual_J_per_m", residual},
+                         {"relative_residual", residual / std::max(std::abs(e.initial) + std::abs(e.external_work), 1e-300)}};
   j["max_temperature_K"] = sim.max_temperature();
   j["mass_scaling"] = to_json(mass_scaling_report(sim));
   nlohmann::json rigid = nlohmann::json::array();
@@ -387,6 +389,7 @@ class CaseRun {
 
 int CaseRun::run_to_end() {
   const Scene& scene = sim_.scene();
+  const DeferStops defer_stops;  // from here a signal stops the loop after a step, with a checkpoint
   Progress progress(scene.solver.end_time, std::cerr, options_.progress ? std::nullopt : std::optional<bool>(false));
   const char* status = run_status::complete;
   std::string message;
@@ -415,7 +418,7 @@ int CaseRun::run_to_end() {
           while (next_snapshot_ <= sim_.time() + eps) next_snapshot_ += snap_dt > 0 ? snap_dt : end;
         }
         if (options_.progress) progress.update(sim_.time(), sim_.step_count(), sim_.last_dt());
-        if (g_stop_requests.load() > 0) {
+        if (stop_requested()) {
           status = run_status::interrupted;
           message = fmt::format("interrupted by a signal at step {}, time {:.6g} s; continue with: mpmcut resume {}",
                                 sim_.step_count(), sim_.time(), root_.string());
@@ -554,6 +557,14 @@ int set_threads(int requested) {
 // ---------------------------------------------------------------------------------------------
 
 int run_case(const Scene& scene, const RunOptions& options) {
+  // Before the result directory and the first large allocation: a run that cannot fit in memory
+  // or cannot finish is the user's input error, not a crash or a hang later.
+  try {
+    check_run_fits(scene);
+  } catch (const InputError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return kExitInputError;
+  }
   SignalGuard signals;
   const int threads = set_threads(options.threads);
   fs::path root;
@@ -646,6 +657,11 @@ int resume_case(const RunOptions& options) {
                               loaded->file.string()));
   }
   scene.source_file = c.loop.case_file;
+  try {
+    check_run_fits(scene);  // the machine resuming may have less memory than the one that started
+  } catch (const InputError& e) {
+    return refuse(e.what());
+  }
   if (c.loop.mpmcut_version != MPMCUT_VERSION)
     std::cerr << "warning: the checkpoint was written by mpmcut " << c.loop.mpmcut_version << ", this is "
               << MPMCUT_VERSION << "; the continuation may differ from an uninterrupted run\n";

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/plot_command.hpp"
+#include "app/stop_signal.hpp"
 #include "studies/task_farm.hpp"
 #include "io/scene_parser.hpp"
 #include "io/atomic_file.hpp"
@@ -119,12 +120,12 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
                    "mean_thrust_force_N_per_mm", "force_window", "chip_thickness_ratio", "max_temperature_K",
                    "shear_zone_max_temperature_K", "tool_chip_max_temperature_K", "chip_classification",
                    "segmentation_degree", "pitch_um", "segmentation_frequency_kHz", "plastic_work_fraction",
-                   "damage_fraction", "friction_fraction", "kinetic_elastic_fraction", "unaccounted_fraction",
+                   "damage_fraction", "friction_fraction", "kinetic_elastic_fraction", "numerical_fraction",
                    "wall_time_s", "message"};
   table.headings = {"case", "V (m/s)", "V (m/min)", "h (mm)", "cell (µm)", "cells across h", "mass scaling",
                     "status", "Fc (N/mm)", "Ft (N/mm)", "force window", "t0/tc", "T max (K)", "T shear zone (K)",
                     "T tool–chip (K)", "chip", "segmentation degree", "pitch (µm)", "frequency (kHz)",
-                    "plastic / W", "damage / W", "friction / W", "kinetic+elastic / W", "unaccounted / W",
+                    "plastic / W", "damage / W", "friction / W", "kinetic+elastic / W", "numerical / W",
                     "wall (s)", "message"};
   int failed = 0;
   std::vector<CaseResult> results;
@@ -147,13 +148,16 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
                           format_number(r.frequency_kHz, 3), format_number(fraction(r.plastic_work_J_per_m), 3),
                           format_number(fraction(r.damage_J_per_m), 3), format_number(fraction(r.friction_J_per_m), 3),
                           format_number(fraction(r.kinetic_elastic_J_per_m), 3),
-                          format_number(fraction(r.unaccounted_J_per_m), 3),
+                          format_number(fraction(r.numerical_J_per_m), 3),
                           format_number(r.wall_time_s ? r.wall_time_s : std::optional<double>(runs[i].wall_time_s), 3),
                           r.message});
   }
   table.write_csv(out / "sweep.csv");
   write_file_atomically(out / "sweep.md", [&](std::ostream& s) {
     s << "# Sweep of " << o.case_file << "\n\n";
+    if (!completed)
+      s << "**Interrupted** by a signal: the sweep is incomplete; the stopped cases are resumable "
+           "(mpmcut resume <case directory>), the cases not started are marked \"not run\".\n\n";
     s << fmt::format("{} cases, {} complete, {} not complete. Forces are means per unit width of cut over the "
                      "steady window of each run (column \"force window\"; where a run ended before its steady "
                      "window, the mean raw force over the last half of the cut). Chip columns come from the chip "
@@ -198,7 +202,7 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
   });
   std::cout << "wrote " << (out / "sweep.csv").string() << " and " << (out / "sweep.md").string() << "\n";
 
-  if (!o.no_plots) {
+  if (!o.no_plots && completed) {  // an interrupted sweep stops here: no plots of a partial sweep
     std::string why;
     if (!python_plotting_available(false, why)) {
       std::cerr << "warning: no sweep plots: " << why << "\n";

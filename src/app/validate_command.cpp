@@ -578,7 +578,7 @@ int run_validation(const ValidateOptions& o) {
   std::cout << "wrote " << (out / "validation.md").string()
             << ", validation.csv, validation_goals.csv, validation_errors.csv, validation_trends.csv, validation_runs.csv\n";
 
-  if (!o.no_plots) {
+  if (!o.no_plots && completed) {  // an interrupted validation stops here: no plots of partial results
     std::string why;
     if (!python_plotting_available(false, why))
       std::cerr << "warning: no validation plots: " << why << "\n";

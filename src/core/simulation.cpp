@@ -77,6 +77,7 @@ Simulation::Simulation(const Scene& scene) : scene_(scene) {
   mark_temperature(scene_.thermal.bottom, [&](int, int j) { return j <= jb; });
   mark_temperature(scene_.thermal.top, [&](int, int j) { return j >= jt; });
   refresh_energy();
+  energy_.initial = energy_.kinetic + energy_.elastic;
 }
 
 void Simulation::build_particles() {
@@ -200,7 +201,7 @@ void Simulation::push_particles_out_of_rigid_bodies(double dt) {
     }
     std::sort(inside.begin(), inside.end());  // fixed order: deterministic sums
     Vec2 impulse = Vec2::Zero();
-    double work = 0.0;
+    double work = 0.0, lost = 0.0;
     for (std::size_t p : inside) {
       Vec2 normal;
       const double d = geom.signed_distance(position_new_[p] - shift, normal);
@@ -212,6 +213,9 @@ void Simulation::push_particles_out_of_rigid_bodies(double dt) {
         impulse += dp;
         contact_records_.push_back({static_cast<int>(r), 2, position_new_[p], normal, dp, false});
         work += dp.dot(vr);
+        // Removing the approach velocity relative to the body is a perfectly inelastic impact:
+        // the particle's kinetic energy changes by dp.vr - m vn^2 / 2, so m vn^2 / 2 is lost.
+        lost += 0.5 * inertia_factor_ * P.mass[p] * vn * vn;
       }
       ++pushed_out_particles_;
     }
@@ -220,6 +224,7 @@ void Simulation::push_particles_out_of_rigid_bodies(double dt) {
     rigid_[r].impulse -= impulse;
     rigid_[r].work += work;
     energy_.external_work += work;
+    energy_.contact_safeguard += lost;
   }
 }
 
@@ -270,6 +275,9 @@ void Simulation::remove_escaped_particles() {
     } else {
       ++removed_particles_;
       removed_mass_ += P.mass[p];
+      // Their energy leaves the ledger's kinetic and elastic sums; booked here so the balance closes.
+      energy_.removed_energy += 0.5 * inertia_factor_ * P.mass[p] * P.velocity[p].squaredNorm() +
+                                materials_[P.material[p]]->elastic_energy(P, p);
     }
   }
   if (keep.size() != P.size()) particles_.permute(keep);
@@ -566,6 +574,7 @@ void Simulation::grid_to_particles(double dt) {
   const Grid& G = grid_;
   const std::size_t n = P.size();
   position_new_.resize(n);
+  transfer_loss_.resize(n);
   const double flip = scene_.solver.flip_fraction;
   const Vec2 b = scene_.body_force;
   // Work of the body force, sum m_p b.(v_old + v_new)/2 dt = b.(P_old + P_new)/2 dt, from the
@@ -589,11 +598,17 @@ void Simulation::grid_to_particles(double dt) {
         const Vec2 v_p2g = G.momentum[node] / G.mass[node];  // w > 0, so the node has mass
         dv += w * (G.velocity_new[node] - v_p2g);
       }
-    const Vec2 v_old = P.velocity[p];
-    P.velocity[p] = flip * (v_old + dv) + (1.0 - flip) * v_pic;
+    const Vec2 v_flip = P.velocity[p] + dv;
+    const Vec2 v_new = flip * v_flip + (1.0 - flip) * v_pic;
+    // The grid's work reaches the particles through the FLIP increment; the PIC share replaces the
+    // part of the particle velocity the grid does not carry, and that kinetic energy is lost
+    // (docs/cutting.md, "Energy balance").
+    transfer_loss_[p] = 0.5 * inertia_factor_ * P.mass[p] * (v_flip.squaredNorm() - v_new.squaredNorm());
+    P.velocity[p] = v_new;
     position_new_[p] = P.position[p] + dt * v_pic;
   }
   if (body_force) energy_.external_work += b.dot(0.5 * (momentum_old + total_momentum())) * dt;
+  energy_.transfer_dissipation += deterministic_sum(n, [&](std::size_t p) { return transfer_loss_[p]; });
 }
 
 // MUSL: the updated particle momenta are mapped back to the grid (same weights as this step's

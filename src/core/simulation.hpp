@@ -44,7 +44,19 @@ struct EnergyTotals {
   double friction = 0.0;           // frictional work at rigid contacts
   double viscous = 0.0;            // work of the artificial bulk viscosity (shocks), >= 0
   double external_work = 0.0;      // work by rigid bodies + body force
+  // Algorithmic energy changes, so that the ledger closes (docs/cutting.md, "Energy balance"):
+  double transfer_dissipation = 0.0;   // kinetic energy the FLIP/PIC blend removes in G2P, >= 0 in practice
+  double contact_safeguard = 0.0;      // kinetic energy the rigid-body push-out safeguard removes, >= 0
+  double removed_energy = 0.0;         // kinetic + elastic energy of particles removed from the domain
+  double initial = 0.0;                // kinetic + elastic at t = 0
 };
+
+// (kinetic + elastic + every dissipated or removed term) - (initial + external work): zero for a
+// ledger that accounts for every joule.
+inline double energy_balance_residual(const EnergyTotals& e) {
+  return e.kinetic + e.elastic + e.plastic_work + e.damage_dissipation + e.friction + e.viscous +
+         e.transfer_dissipation + e.contact_safeguard + e.removed_energy - e.initial - e.external_work;
+}
 
 class Simulation {
  public:
@@ -151,6 +163,7 @@ class Simulation {
   std::vector<std::size_t> strip_begin_;  // strip s holds strip_order_[strip_begin_[s] .. strip_begin_[s+1])
   std::vector<ConstitutiveIncrement> increments_;
   std::vector<double> deposited_heat_;  // frictional heat taken by each particle this step, J/m
+  std::vector<double> transfer_loss_;   // kinetic energy the FLIP/PIC blend took from each particle this step, J/m
   Particles particles_;
   std::vector<std::unique_ptr<Material>> materials_;
   std::vector<RigidBodyState> rigid_;

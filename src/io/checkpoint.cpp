@@ -43,7 +43,7 @@ static_assert(sizeof(Particles) == sizeof(ParticlesLayout),
               "Particles gained or lost a field: update for_each_particle_array() in io/checkpoint.cpp "
               "and bump kCheckpointFormatVersion");
 struct EnergyLayout {
-  double a, b, c, d, e, f, g, h;
+  double a, b, c, d, e, f, g, h, i, j, k, l;
 };
 static_assert(sizeof(EnergyTotals) == sizeof(EnergyLayout),
               "EnergyTotals gained or lost a field: update energy_fields() in io/checkpoint.cpp");
@@ -84,7 +84,8 @@ void for_each_particle_array(P& p, F&& f) {
 template <class E>
 auto energy_fields(E& e) {
   return std::array{&e.kinetic, &e.elastic, &e.plastic_work, &e.heat, &e.damage_dissipation, &e.friction,
-                    &e.viscous, &e.external_work};
+                    &e.viscous, &e.external_work, &e.transfer_dissipation, &e.contact_safeguard,
+                    &e.removed_energy, &e.initial};
 }
 
 // --- Little-endian byte building and reading ------------------------------------------------

@@ -81,8 +81,9 @@ struct Checkpoint {
   void restore(Simulation& sim) &&;
 };
 
-inline constexpr std::uint32_t kCheckpointFormatVersion = 4;  // 2: EnergyTotals::viscous; 3: Particles::fracture_energy;
-                                                              // 4: Particles::damage_dissipation
+// 2: EnergyTotals::viscous; 3: Particles::fracture_energy; 4: Particles::damage_dissipation;
+// 5: EnergyTotals' algorithmic terms (FLIP/PIC blend, contact safeguard, removed) and initial energy
+inline constexpr std::uint32_t kCheckpointFormatVersion = 5;
 
 // Hash (64-bit FNV-1a) of the expanded scene as write_scene() prints it: equal for scenes that
 // are equal, whatever file they came from.

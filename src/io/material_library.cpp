@@ -1,6 +1,7 @@
 #include "io/material_library.hpp"
 
 #include <cmath>
+#include <algorithm>
 
 #include <fmt/format.h>
 
@@ -22,55 +23,65 @@ std::string list_names(const std::vector<std::string>& names) {
 
 // Range checks after all keys are read, so that inherited (library) values are checked too.
 void validate_material(TableReader& t, const MaterialParameters& m) {
+  // Upper bounds: beyond every engineering material by an order of magnitude (docs/reliability.md);
+  // they keep wave speeds, time steps and energies representable.
   const bool jc = m.model == MaterialModel::JohnsonCook;
-  t.check("density", m.density > 0.0, "a positive number (kg/m^3)", m.density);
-  t.check("youngs_modulus", m.youngs_modulus > 0.0, "a positive number (Pa)", m.youngs_modulus);
-  t.check("poisson_ratio", m.poisson_ratio > -1.0 && m.poisson_ratio < 0.5, "in (-1, 0.5)", m.poisson_ratio);
+  const Range dimensionless = Range::closed(0.0, 10.0);
+  t.check("density", m.density, Range::open_closed(0.0, 1e5, "kg/m^3"));
+  t.check("youngs_modulus", m.youngs_modulus, Range::open_closed(0.0, 1e13, "Pa"));
+  t.check("poisson_ratio", m.poisson_ratio, Range::open(-1.0, 0.5));
   if (jc)
-    t.check("specific_heat", m.specific_heat > 0.0, "a positive number (J/(kg K)) for johnson_cook (plastic heating)",
-            m.specific_heat);
+    t.check("specific_heat", m.specific_heat,
+            Range::open_closed(0.0, 1e5, "J/(kg K)", "positive for johnson_cook: plastic heating"));
   else
-    t.check("specific_heat", m.specific_heat >= 0.0, ">= 0 (J/(kg K))", m.specific_heat);
-  t.check("thermal_conductivity", m.thermal_conductivity >= 0.0, ">= 0 (W/(m K))", m.thermal_conductivity);
-  t.check("taylor_quinney", m.taylor_quinney >= 0.0 && m.taylor_quinney <= 1.0, "in [0, 1]", m.taylor_quinney);
-  t.check("room_temperature", m.room_temperature > 0.0, "a positive temperature (K)", m.room_temperature);
-  if (jc) {
-    t.check("melting_temperature", m.melting_temperature > m.room_temperature,
-            fmt::format("greater than room_temperature ({} K)", m.room_temperature), m.melting_temperature);
-    t.check("jc_A", m.jc_A >= 0.0, ">= 0 (Pa)", m.jc_A);
-    t.check("jc_B", m.jc_B >= 0.0, ">= 0 (Pa)", m.jc_B);
-    t.check("jc_n", m.jc_n >= 0.0, ">= 0", m.jc_n);
-    t.check("jc_C", m.jc_C >= 0.0, ">= 0", m.jc_C);
-    t.check("jc_m", m.jc_m > 0.0, "> 0", m.jc_m);
-    t.check("reference_strain_rate", m.reference_strain_rate > 0.0, "> 0 (1/s)", m.reference_strain_rate);
-  }
-  t.check("strain_rate_smoothing_time", m.strain_rate_smoothing_time >= 0.0, ">= 0 (s)",
-          m.strain_rate_smoothing_time);
-  if (m.eos == EquationOfState::MieGruneisen) {
-    t.check("mg_c0", m.mg_c0 > 0.0, "> 0 (m/s) with eos = \"mie_gruneisen\"", m.mg_c0);
-    t.check("mg_s", m.mg_s >= 0.0, ">= 0", m.mg_s);
-    t.check("mg_gamma0", m.mg_gamma0 >= 0.0, ">= 0", m.mg_gamma0);
-  }
-  t.check("bulk_viscosity_linear", m.bulk_viscosity_linear >= 0.0, ">= 0", m.bulk_viscosity_linear);
-  t.check("bulk_viscosity_quadratic", m.bulk_viscosity_quadratic >= 0.0, ">= 0", m.bulk_viscosity_quadratic);
+    t.check("specific_heat", m.specific_heat, Range::closed(0.0, 1e5, "J/(kg K)"));
+  t.check("thermal_conductivity", m.thermal_conductivity, Range::closed(0.0, 1e4, "W/(m K)"));
+  t.check("taylor_quinney", m.taylor_quinney, Range::closed(0.0, 1.0));
+  t.check("room_temperature", m.room_temperature, Range::open(0.0, 1e4, "K"));
+  // A key the model uses is checked against its range; one it does not use is still checked, so
+  // that a wrong value does not hide until the model is switched on, against the same range
+  // widened to admit 0 (its default, which the expanded scene.toml writes back).
+  const auto check_model_key = [&](const char* key, double value, bool used, Range range) {
+    if (!used) range.min = std::min(range.min, 0.0), range.min_open = false, range.note = "";
+    t.check(key, value, range);
+  };
+  check_model_key("melting_temperature", m.melting_temperature, jc,
+                  Range::open_closed(m.room_temperature, 1e4, "K", "above room_temperature"));
+  check_model_key("jc_A", m.jc_A, jc, Range::closed(0.0, 1e11, "Pa"));
+  check_model_key("jc_B", m.jc_B, jc, Range::closed(0.0, 1e11, "Pa"));
+  check_model_key("jc_n", m.jc_n, jc, dimensionless);
+  check_model_key("jc_C", m.jc_C, jc, dimensionless);
+  check_model_key("jc_m", m.jc_m, jc, Range::open_closed(0.0, 10.0));
+  check_model_key("reference_strain_rate", m.reference_strain_rate, jc, Range::open_closed(0.0, 1e12, "1/s"));
+  t.check("strain_rate_smoothing_time", m.strain_rate_smoothing_time, Range::closed(0.0, 1.0, "s"));
+  const bool mg = m.eos == EquationOfState::MieGruneisen;
+  check_model_key("mg_c0", m.mg_c0, mg, Range::open_closed(0.0, 1e5, "m/s", "with eos = \"mie_gruneisen\""));
+  check_model_key("mg_s", m.mg_s, mg, dimensionless);
+  check_model_key("mg_gamma0", m.mg_gamma0, mg, dimensionless);
+  t.check("bulk_viscosity_linear", m.bulk_viscosity_linear, dimensionless);
+  t.check("bulk_viscosity_quadratic", m.bulk_viscosity_quadratic, dimensionless);
+  for (const auto& [key, value] : {std::pair{"jc_D1", m.jc_D1}, {"jc_D2", m.jc_D2}, {"jc_D3", m.jc_D3},
+                                   {"jc_D4", m.jc_D4}, {"jc_D5", m.jc_D5}})
+    t.check(key, value, Range::closed(-100.0, 100.0));
+  t.check("damage_triaxiality_cutoff", m.damage_triaxiality_cutoff, Range::closed(-100.0, 100.0));
+  if (!m.damage_enabled) check_model_key("min_failure_strain", m.min_failure_strain, false, Range::open_closed(0.0, 100.0));
   if (m.damage_enabled) {
     // Damage is driven by plastic strain, which an elastic material never has.
     t.check("damage", jc, "false unless model = \"johnson_cook\"", 1.0);
-    t.check("min_failure_strain", m.min_failure_strain > 0.0, "> 0 (eps_f clamp; with D1 < 0 eps_f can reach 0)",
-            m.min_failure_strain);
+    t.check("min_failure_strain", m.min_failure_strain,
+            Range::open_closed(0.0, 100.0, "", "eps_f clamp; with D1 < 0 eps_f can reach 0"));
     // G_f = 0 is Abaqus' "instantaneous failure", which it warns causes dynamic instabilities.
-    t.check("fracture_energy", m.fracture_energy > 0.0, "> 0 (J/m^2) when damage = true", m.fracture_energy);
+    t.check("fracture_energy", m.fracture_energy, Range::open_closed(0.0, 1e8, "J/m^2", "positive when damage = true"));
   }
-  t.check("fracture_energy", m.fracture_energy >= 0.0, ">= 0 (J/m^2)", m.fracture_energy);
-  t.check("fracture_transition_strain_rate", m.fracture_transition_strain_rate >= 0.0,
-          ">= 0 (1/s; 0 = fracture energy independent of rate)", m.fracture_transition_strain_rate);
-  if (m.fracture_transition_strain_rate > 0.0) {
-    t.check("fracture_energy_brittle", m.fracture_energy_brittle > 0.0,
-            "> 0 (J/m^2, the high-rate fracture energy) when fracture_transition_strain_rate > 0",
-            m.fracture_energy_brittle);
-    t.check("fracture_transition_exponent", m.fracture_transition_exponent > 0.0, "> 0", m.fracture_transition_exponent);
-  }
-  t.check("max_damage", m.max_damage > 0.0 && m.max_damage <= 1.0, "in (0, 1]", m.max_damage);
+  t.check("fracture_energy", m.fracture_energy, Range::closed(0.0, 1e8, "J/m^2"));
+  t.check("fracture_transition_strain_rate", m.fracture_transition_strain_rate,
+          Range::closed(0.0, 1e12, "1/s", "0 = fracture energy independent of rate"));
+  const bool rate_dependent = m.fracture_transition_strain_rate > 0.0;
+  check_model_key("fracture_energy_brittle", m.fracture_energy_brittle, rate_dependent,
+                  Range::open_closed(0.0, 1e8, "J/m^2", "the high-rate fracture energy, when fracture_transition_strain_rate > 0"));
+  check_model_key("fracture_transition_exponent", m.fracture_transition_exponent, rate_dependent,
+                  Range::open_closed(0.0, 100.0));
+  t.check("max_damage", m.max_damage, Range::open_closed(0.0, 1.0));
 }
 
 }  // namespace
@@ -142,7 +153,7 @@ MaterialParameters read_material(TableReader& t, const MaterialLibrary& library)
   // E and nu of this material (after library overrides).
   if (auto toughness = t.optional_number("fracture_toughness")) {
     if (t.has("fracture_energy")) t.fail("fracture_toughness", "give fracture_energy or fracture_toughness, not both");
-    t.check("fracture_toughness", *toughness > 0.0, "a positive number (Pa sqrt(m))", *toughness);
+    t.check("fracture_toughness", *toughness, Range::open_closed(0.0, 1e10, "Pa sqrt(m)"));
     m.fracture_energy = fracture_energy_from_toughness(*toughness, m.youngs_modulus, m.poisson_ratio);
   }
   validate_material(t, m);

@@ -20,6 +20,21 @@ namespace {
 
 std::string vec_text(const Vec2& v) { return fmt::format("[{}, {}]", v.x(), v.y()); }
 
+// Physical ranges shared by several keys (docs/reliability.md, "Input ranges"). Wide enough for
+// any 2D cutting or impact scene, narrow enough that sizes, step counts and output counts computed
+// from them stay representable (the memory and step estimate then decides what fits this machine).
+const Range kCoordinate = Range::closed(-1e3, 1e3, "m");
+const Range kSpeedComponent = Range::closed(-1e4, 1e4, "m/s");
+const Range kTime = Range::open_closed(0.0, 1000.0, "s");
+const Range kOutputInterval = Range::closed(0.0, 1000.0, "s", "0 = first and last only / every step");
+constexpr double kMaxTemperature = 1e4;  // K: above every melting point
+
+// A temperature below the material's melting point (where it has one).
+Range temperature_range(const MaterialParameters& m) {
+  if (m.melting_temperature > 0.0) return Range::open(0.0, m.melting_temperature, "K", "below the melting temperature");
+  return Range::open_closed(0.0, kMaxTemperature, "K");
+}
+
 // ---------------------------------------------------------------------------------------------
 // --set overrides: edit the TOML tree before it is read, so that an overridden value is
 // validated exactly like one written in the file (and an unknown key is reported as unknown).
@@ -166,6 +181,9 @@ bool segments_intersect(const Vec2& p, const Vec2& q, const Vec2& r, const Vec2&
 // A polygon read from `key`, checked to be simple with non-zero area.
 Polygon read_polygon(TableReader& t, std::string_view key) {
   std::vector<Vec2> v = t.points(key);
+  for (const Vec2& p : v)
+    if (!kCoordinate.contains(p.x()) || !kCoordinate.contains(p.y()))
+      t.fail(key, fmt::format("every coordinate must be {}, got vertex {}", kCoordinate.text(), vec_text(p)));
   // Users often repeat the first vertex to close the outline; the closing edge is implicit.
   if (v.size() > 3 && v.front() == v.back()) v.pop_back();
   if (v.size() < 3) t.fail(key, fmt::format("a polygon needs at least 3 vertices, got {}", v.size()));
@@ -193,10 +211,9 @@ GridSpec read_grid(TableReader t) {
   t.require_key("cell_size", "background grid cell size h, m");
   t.require_key("min", "lower-left corner [x, y], m");
   t.require_key("max", "upper-right corner [x, y], m");
-  g.cell_size = t.number("cell_size", 0.0);
-  g.min = t.vec2("min", g.min);
-  g.max = t.vec2("max", g.max);
-  t.check("cell_size", g.cell_size > 0.0, "a positive length (m)", g.cell_size);
+  g.cell_size = t.number("cell_size", 0.0, Range::closed(1e-9, 100.0, "m"));
+  g.min = t.vec2("min", g.min, kCoordinate);
+  g.max = t.vec2("max", g.max, kCoordinate);
   t.check("max", (g.max.array() > g.min.array()).all(), "greater than grid.min = " + vec_text(g.min) + " in x and y", 0.0);
   const Vec2 size = g.max - g.min;
   t.check("cell_size", g.cell_size <= size.minCoeff(),
@@ -227,20 +244,15 @@ SolverSpec read_solver(TableReader t, SolverSpec s = {}) {
   s.shape_function = t.choice<ShapeFunctionKind>(
       "shape_function", {{"ugimp", ShapeFunctionKind::UGimp}, {"linear", ShapeFunctionKind::Linear}}, s.shape_function);
   s.scheme = t.choice<TimeScheme>("scheme", {{"musl", TimeScheme::MUSL}, {"usl", TimeScheme::USL}}, s.scheme);
-  s.cfl = t.number("cfl", s.cfl);
-  t.check("cfl", s.cfl > 0.0 && s.cfl <= 1.0, "in (0, 1]", s.cfl);
-  s.flip_fraction = t.number("flip_fraction", s.flip_fraction);
-  t.check("flip_fraction", s.flip_fraction >= 0.0 && s.flip_fraction <= 1.0, "in [0, 1]", s.flip_fraction);
+  s.cfl = t.number("cfl", s.cfl, Range::open_closed(0.0, 1.0));
+  s.flip_fraction = t.number("flip_fraction", s.flip_fraction, Range::closed(0.0, 1.0, "", "1 = pure FLIP"));
   if (s.end_time <= 0.0) t.require_key("end_time", "simulated time, s");
-  s.end_time = t.number("end_time", s.end_time);
-  t.check("end_time", s.end_time > 0.0, "a positive time (s)", s.end_time);
-  s.max_steps = t.integer("max_steps", s.max_steps);
-  t.check("max_steps", s.max_steps >= 0, "an integer >= 0 (0 = unlimited)", static_cast<double>(s.max_steps));
-  s.fixed_time_step = t.number("fixed_time_step", s.fixed_time_step);
-  t.check("fixed_time_step", s.fixed_time_step >= 0.0, ">= 0 (s; 0 = from the CFL condition)", s.fixed_time_step);
+  s.end_time = t.number("end_time", s.end_time, kTime);
+  s.max_steps = t.integer("max_steps", s.max_steps, Range::closed(0.0, 1e12, "steps", "0 = unlimited"));
+  s.fixed_time_step =
+      t.number("fixed_time_step", s.fixed_time_step, Range::closed(0.0, 1.0, "s", "0 = from the CFL condition"));
   s.remove_escaping_particles = t.boolean("remove_escaping_particles", s.remove_escaping_particles);
-  s.contact_distance_cells = t.number("contact_distance_cells", s.contact_distance_cells);
-  t.check("contact_distance_cells", s.contact_distance_cells >= 0.0, ">= 0 (cells)", s.contact_distance_cells);
+  s.contact_distance_cells = t.number("contact_distance_cells", s.contact_distance_cells, Range::closed(0.0, 10.0, "cells"));
   s.mass_scaling_factor = t.number("mass_scaling_factor", s.mass_scaling_factor);
   t.check("mass_scaling_factor", s.mass_scaling_factor >= 1.0 && s.mass_scaling_factor <= kMaxMassScalingFactor,
           fmt::format("in [1, {:g}] (1 = no mass scaling)", kMaxMassScalingFactor), s.mass_scaling_factor);
@@ -261,10 +273,9 @@ SolverSpec read_solver(TableReader t, SolverSpec s = {}) {
 
 OutputSpec read_output(std::optional<TableReader> t, OutputSpec o = {}) {
   if (!t) return o;
-  o.snapshot_interval = t->number("snapshot_interval", o.snapshot_interval);
-  t->check("snapshot_interval", o.snapshot_interval >= 0.0, ">= 0 (s; 0 = first and last only)", o.snapshot_interval);
-  o.history_interval = t->number("history_interval", o.history_interval);
-  t->check("history_interval", o.history_interval >= 0.0, ">= 0 (s; 0 = every step)", o.history_interval);
+  o.snapshot_interval =
+      t->number("snapshot_interval", o.snapshot_interval, Range::closed(0.0, 1000.0, "s", "0 = first and last only"));
+  o.history_interval = t->number("history_interval", o.history_interval, Range::closed(0.0, 1000.0, "s", "0 = every step"));
   o.vtu = t->boolean("vtu", o.vtu);
   t->reject_unknown_keys();
   return o;
@@ -276,7 +287,8 @@ ThermalSpec read_thermal(std::optional<TableReader> t) {
   th.conduction = t->boolean("conduction", th.conduction);
   for (auto [side, value] : {std::pair{"left", &th.left}, {"right", &th.right}, {"bottom", &th.bottom}, {"top", &th.top}}) {
     *value = t->optional_number(side);
-    if (*value) t->check(side, **value > 0.0, "a positive temperature (K), or absent for an insulated side", **value);
+    if (*value)
+      t->check(side, **value, Range::open_closed(0.0, kMaxTemperature, "K", "absent for an insulated side"));
   }
   t->reject_unknown_keys();
   return th;
@@ -295,8 +307,8 @@ Shape read_shape(TableReader& t, const GridSpec& grid) {
     shape.kind = ShapeKind::Rectangle;
     r->require_key("min", "lower-left corner [x, y], m");
     r->require_key("max", "upper-right corner [x, y], m");
-    shape.rectangle.min = r->vec2("min", Vec2::Zero());
-    shape.rectangle.max = r->vec2("max", Vec2::Zero());
+    shape.rectangle.min = r->vec2("min", Vec2::Zero(), kCoordinate);
+    shape.rectangle.max = r->vec2("max", Vec2::Zero(), kCoordinate);
     r->check("max", (shape.rectangle.max.array() > shape.rectangle.min.array()).all(),
              "greater than min = " + vec_text(shape.rectangle.min) + " in x and y", 0.0);
     r->reject_unknown_keys();
@@ -305,9 +317,8 @@ Shape read_shape(TableReader& t, const GridSpec& grid) {
     shape.kind = ShapeKind::Disk;
     d->require_key("center", "[x, y], m");
     d->require_key("radius", "m");
-    shape.disk.center = d->vec2("center", Vec2::Zero());
-    shape.disk.radius = d->number("radius", 0.0);
-    d->check("radius", shape.disk.radius > 0.0, "a positive length (m)", shape.disk.radius);
+    shape.disk.center = d->vec2("center", Vec2::Zero(), kCoordinate);
+    shape.disk.radius = d->number("radius", 0.0, Range::open_closed(0.0, 1e3, "m"));
     d->reject_unknown_keys();
   } else {
     key = "polygon";
@@ -342,13 +353,11 @@ BodySpec read_body(TableReader t, const Scene& scene) {
     t.fail("material", fmt::format("no [[material]] named \"{}\"; defined materials: {}", b.material,
                                    list_names(scene.materials)));
   b.shape = read_shape(t, scene.grid);
-  const long ppc = t.integer("particles_per_cell", b.particles_per_cell);
-  t.check("particles_per_cell", ppc >= 1 && ppc <= 8, "an integer between 1 and 8 (per direction)", ppc);
-  b.particles_per_cell = static_cast<int>(ppc);
-  b.velocity = t.vec2("velocity", b.velocity);
+  b.particles_per_cell =
+      static_cast<int>(t.integer("particles_per_cell", b.particles_per_cell, Range::closed(1, 8, "per direction")));
+  b.velocity = t.vec2("velocity", b.velocity, kSpeedComponent);
   // Starting at the material's reference temperature means no thermal softening at rest.
-  b.temperature = t.number("temperature", scene.materials[m].room_temperature);
-  t.check("temperature", b.temperature > 0.0, "a positive temperature (K)", b.temperature);
+  b.temperature = t.number("temperature", scene.materials[m].room_temperature, temperature_range(scene.materials[m]));
   t.reject_unknown_keys();
   return b;
 }
@@ -360,25 +369,28 @@ RigidBodySpec read_rigid_body(TableReader t) {
   r.name = t.string("name", "");
   t.check("name", !r.name.empty(), "a non-empty string", 0.0);
   r.polygon = read_polygon(t, "polygon");
-  r.rounding_radius = t.number("rounding_radius", r.rounding_radius);
-  t.check("rounding_radius", r.rounding_radius >= 0.0, ">= 0 (m)", r.rounding_radius);
-  r.velocity = t.vec2("velocity", r.velocity);
-  r.friction = t.number("friction", r.friction);
-  t.check("friction", r.friction >= 0.0, ">= 0 (Coulomb coefficient)", r.friction);
+  r.rounding_radius = t.number("rounding_radius", r.rounding_radius, Range::closed(0.0, 1.0, "m"));
+  r.velocity = t.vec2("velocity", r.velocity, kSpeedComponent);
+  r.friction = t.number("friction", r.friction, Range::closed(0.0, 2.0, "", "Coulomb coefficient"));
   t.reject_unknown_keys();
   return r;
 }
 
 // The workpiece material of a [cutting] case: a [[material]] of the file, else a library set.
-MaterialParameters cutting_material(TableReader& top, TableReader& cutting, const std::string& name) {
+MaterialParameters cutting_material(TableReader& top, TableReader& cutting, const CuttingParameters& params) {
+  const std::string& name = params.material;
   const MaterialLibrary& library = builtin_material_library();
   std::optional<MaterialParameters> found;
   for (TableReader& t : top.array_of_tables("material")) {
     MaterialParameters m = read_material(t, library);
     if (m.name == name) found = m;
   }
-  if (found) return *found;
-  if (const MaterialParameters* m = library.find(name)) return *m;
+  const MaterialParameters* m = found ? &*found : library.find(name);
+  if (m != nullptr) {
+    // The workpiece starts solid: at or above the melting point the flow stress is zero.
+    cutting.check("initial_temperature", params.initial_temperature, temperature_range(*m));
+    return *m;
+  }
   std::string known;
   for (const auto& n : library.names()) known += (known.empty() ? "" : ", ") + ("\"" + n + "\"");
   cutting.fail("material", fmt::format("no [[material]] and no library set named \"{}\"; library sets: {}", name, known));
@@ -393,7 +405,7 @@ Scene read_cutting_case(TableReader& top) {
                     "to edit those, run the case once and edit the expanded scene.toml in its result directory");
   TableReader cutting = top.table("cutting");
   const CuttingParameters params = read_cutting_parameters(cutting);
-  const MaterialParameters material = cutting_material(top, cutting, params.material);
+  const MaterialParameters material = cutting_material(top, cutting, params);
   Scene scene;
   try {
     scene = build_cutting_scene(params, material);
@@ -422,7 +434,7 @@ Scene read_scene(const toml::table& root, const std::shared_ptr<const InputSourc
   scene.solver = read_solver(top.table("solver"));
   scene.output = read_output(top.optional_table("output"));
   scene.thermal = read_thermal(top.optional_table("thermal"));
-  scene.body_force = top.vec2("body_force", scene.body_force);
+  scene.body_force = top.vec2("body_force", scene.body_force, Range::closed(-1e12, 1e12, "m/s^2"));
 
   const MaterialLibrary& library = builtin_material_library();
   for (TableReader& t : top.array_of_tables("material")) {

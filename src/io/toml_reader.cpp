@@ -1,6 +1,7 @@
 #include "io/toml_reader.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -133,15 +134,37 @@ void TableReader::check(std::string_view key, bool ok, std::string_view allowed,
   fail(key, fmt::format("must be {}, got {}", allowed, n ? describe_value(*n) : fmt::format("{}", value)));
 }
 
+std::string Range::text() const {
+  std::string t = fmt::format("in {}{:g}, {:g}{}", min_open ? '(' : '[', min, max, max_open ? ')' : ']');
+  if (!unit.empty()) t += fmt::format(" {}", unit);
+  if (!note.empty()) t += fmt::format(" ({})", note);
+  return t;
+}
+
+void TableReader::check(std::string_view key, double value, const Range& range) {
+  check(key, range.contains(value), range.text(), value);
+}
+
 double TableReader::number(std::string_view key, double fallback) {
   return optional_number(key).value_or(fallback);
+}
+
+double TableReader::number(std::string_view key, double fallback, const Range& range) {
+  const double x = number(key, fallback);
+  check(key, x, range);
+  return x;
 }
 
 std::optional<double> TableReader::optional_number(std::string_view key) {
   const toml::node* n = node(key);
   if (n == nullptr) return std::nullopt;
   if (auto i = n->value_exact<int64_t>()) return static_cast<double>(*i);
-  if (auto d = n->value_exact<double>()) return *d;
+  if (auto d = n->value_exact<double>()) {
+    // nan and inf are valid TOML but never a physical value; downstream they hang loops (an end
+    // time of inf) or overflow sizes (a cut length of inf), so they are refused for every key.
+    if (!std::isfinite(*d)) fail(key, fmt::format("must be a finite number, got {}", describe_value(*n)));
+    return *d;
+  }
   fail_type(key, "a number");
 }
 
@@ -150,6 +173,12 @@ long TableReader::integer(std::string_view key, long fallback) {
   if (n == nullptr) return fallback;
   if (auto i = n->value_exact<int64_t>()) return static_cast<long>(*i);
   fail_type(key, "an integer");
+}
+
+long TableReader::integer(std::string_view key, long fallback, const Range& range) {
+  const long x = integer(key, fallback);
+  check(key, static_cast<double>(x), range);
+  return x;
 }
 
 bool TableReader::boolean(std::string_view key, bool fallback) {
@@ -174,7 +203,7 @@ std::optional<Vec2> as_vec2(const toml::node& n) {
   for (int k = 0; k < 2; ++k) {
     const toml::node& c = *a->get(k);
     if (auto i = c.value_exact<int64_t>()) v[k] = static_cast<double>(*i);
-    else if (auto d = c.value_exact<double>()) v[k] = *d;
+    else if (auto d = c.value_exact<double>(); d && std::isfinite(*d)) v[k] = *d;  // nan/inf: never a coordinate
     else return std::nullopt;
   }
   return v;
@@ -185,7 +214,15 @@ Vec2 TableReader::vec2(std::string_view key, const Vec2& fallback) {
   const toml::node* n = node(key);
   if (n == nullptr) return fallback;
   if (auto v = as_vec2(*n)) return *v;
-  fail_type(key, "a pair of numbers [x, y]");
+  fail_type(key, "a pair of finite numbers [x, y]");
+}
+
+Vec2 TableReader::vec2(std::string_view key, const Vec2& fallback, const Range& component_range) {
+  const Vec2 v = vec2(key, fallback);
+  for (int k = 0; k < 2; ++k)
+    if (!component_range.contains(v[k]))
+      fail(key, fmt::format("each component must be {}, got [{}, {}]", component_range.text(), v.x(), v.y()));
+  return v;
 }
 
 std::vector<Vec2> TableReader::points(std::string_view key) {
@@ -193,10 +230,10 @@ std::vector<Vec2> TableReader::points(std::string_view key) {
   std::vector<Vec2> result;
   if (n == nullptr) return result;
   const toml::array* a = n->as_array();
-  if (a == nullptr) fail_type(key, "an array of points [[x, y], ...]");
+  if (a == nullptr) fail_type(key, "an array of points [[x, y], ...] of finite numbers");
   for (const toml::node& p : *a) {
     auto v = as_vec2(p);
-    if (!v) fail_type(key, "an array of points [[x, y], ...]");
+    if (!v) fail_type(key, "an array of points [[x, y], ...] of finite numbers");
     result.push_back(*v);
   }
   return result;

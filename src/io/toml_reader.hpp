@@ -5,7 +5,8 @@
 //  - records every key the schema asks about, so that any other key is reported as unknown,
 //    with the closest known key suggested (typos must not be silently ignored),
 //  - turns a wrong type or an out-of-range value into an InputError that says what is allowed.
-// Integers are accepted where numbers are expected (1 -> 1.0).
+// Integers are accepted where numbers are expected (1 -> 1.0). Every number must be finite (nan and
+// +-inf are never a physical value), and each key declares its physical range (Range) where it is read.
 #include <initializer_list>
 #include <memory>
 #include <optional>
@@ -40,6 +41,33 @@ std::string describe_type(const toml::node& node);
 // A value as it would be written in TOML (tables and long arrays abbreviated).
 std::string describe_value(const toml::node& node);
 
+// The documented range of a number key: an interval, either end open or closed, with its unit and
+// an optional note ("0 = automatic"). Declared next to where the key is read, so that a new key
+// gets its bound in the same line (docs/reliability.md lists them all).
+struct Range {
+  double min = 0.0, max = 0.0;
+  bool min_open = false, max_open = false;
+  std::string_view unit;  // "m", "K", "" for a ratio
+  std::string_view note;  // e.g. "0 = automatic"
+  bool contains(double x) const {
+    return (min_open ? x > min : x >= min) && (max_open ? x < max : x <= max);
+  }
+  std::string text() const;  // "in (0, 1] m (0 = automatic)"
+  // Shorthands for the usual shapes: (lo, hi], [lo, hi], (lo, hi), [lo, hi).
+  static Range open_closed(double lo, double hi, std::string_view unit = "", std::string_view note = "") {
+    return {lo, hi, true, false, unit, note};
+  }
+  static Range closed(double lo, double hi, std::string_view unit = "", std::string_view note = "") {
+    return {lo, hi, false, false, unit, note};
+  }
+  static Range open(double lo, double hi, std::string_view unit = "", std::string_view note = "") {
+    return {lo, hi, true, true, unit, note};
+  }
+  static Range closed_open(double lo, double hi, std::string_view unit = "", std::string_view note = "") {
+    return {lo, hi, false, true, unit, note};
+  }
+};
+
 class TableReader {
  public:
   TableReader(const toml::table& table, std::string path, std::shared_ptr<const InputSource> source);
@@ -51,6 +79,10 @@ class TableReader {
 
   // Typed getters: an absent key gives the fallback, a wrong type throws. Each declares the key.
   double number(std::string_view key, double fallback);
+  // A number checked against its range (the fallback too: a default or inherited value is checked).
+  double number(std::string_view key, double fallback, const Range& range);
+  long integer(std::string_view key, long fallback, const Range& range);
+  Vec2 vec2(std::string_view key, const Vec2& fallback, const Range& component_range);
   std::optional<double> optional_number(std::string_view key);
   long integer(std::string_view key, long fallback);
   bool boolean(std::string_view key, bool fallback);
@@ -71,6 +103,7 @@ class TableReader {
   // If !ok: "<loc>: key '<path>': must be <allowed>, got <value>". `value` is used only when the
   // key is absent from this table (e.g. inherited from a library set or a default).
   void check(std::string_view key, bool ok, std::string_view allowed, double value);
+  void check(std::string_view key, double value, const Range& range);  // "must be in (0, 1] m, got ..."
   [[noreturn]] void fail(std::string_view key, std::string_view message) const;
   [[noreturn]] void fail_table(std::string_view message) const;  // about this table as a whole
   std::string location(std::string_view key) const;              // "file:line:col" or the override

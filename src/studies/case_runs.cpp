@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -47,9 +48,14 @@ pid_t spawn_child(const std::string& exe, const ChildRun& run) {
   c_argv.push_back(nullptr);
   std::cout.flush();
   std::cerr.flush();
+  const pid_t parent = getpid();
   const pid_t pid = fork();
   if (pid != 0) return pid;
   setpgid(0, 0);
+  // If the sweep itself dies (even by SIGKILL) its runs get SIGTERM: they checkpoint and stop
+  // instead of running on as orphans (docs/reliability.md, "Signals").
+  prctl(PR_SET_PDEATHSIG, SIGTERM);
+  if (getppid() != parent) _exit(130);  // the sweep died before prctl took effect
   const int in = open("/dev/null", O_RDONLY);
   const int log = open(run.log_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   if (in >= 0) dup2(in, STDIN_FILENO);
@@ -272,7 +278,7 @@ CaseResult read_case_result(const fs::path& dir, const fs::path& log_file, int e
     const auto kinetic = get("kinetic"), elastic = get("elastic"), viscous = get("viscous_dissipation");
     if (kinetic && elastic) r.kinetic_elastic_J_per_m = *kinetic + *elastic;
     if (r.tool_work_J_per_m && r.plastic_work_J_per_m && r.damage_J_per_m && r.friction_J_per_m && r.kinetic_elastic_J_per_m)
-      r.unaccounted_J_per_m = *r.tool_work_J_per_m - *r.plastic_work_J_per_m - *r.damage_J_per_m - *r.friction_J_per_m -
+      r.numerical_J_per_m = *r.tool_work_J_per_m - *r.plastic_work_J_per_m - *r.damage_J_per_m - *r.friction_J_per_m -
                               *r.kinetic_elastic_J_per_m - viscous.value_or(0.0);
   }
 

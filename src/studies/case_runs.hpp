@@ -38,9 +38,9 @@ struct CaseResult {
   std::optional<double> wall_time_s;
   std::optional<double> cell_size_um, mass_scaling_factor;
   // Energy ledger at the end (summary.json energy_J_per_m): the tool's work and where it went; the
-  // unaccounted part is the numerical remainder (FLIP/PIC, removed particles, safeguards).
+  // numerical part is the rest: FLIP/PIC transfer dissipation, removed particles, the contact safeguard, the residual.
   std::optional<double> tool_work_J_per_m, plastic_work_J_per_m, damage_J_per_m, friction_J_per_m,
-      kinetic_elastic_J_per_m, unaccounted_J_per_m;
+      kinetic_elastic_J_per_m, numerical_J_per_m;
 };
 
 // Reads summary.json of `dir` (and forces.csv for the fallback mean: when the run ended before its steady

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "../support/short_cut.hpp"
@@ -22,8 +23,11 @@ TEST(ShortCut, ChipFormsNoPenetrationPositiveForcesEnergyCloses) {
   EXPECT_TRUE(r.finite);
   EXPECT_GT(r.mean_cutting_force_N_per_m, 0.0);
   EXPECT_GT(r.mean_thrust_force_N_per_m, 0.0);
-  // Work done by the tool = kinetic + elastic + plastic + damage + friction, within 5%.
-  EXPECT_LT(std::abs(r.balance_error), 0.05) << "relative energy balance error " << r.balance_error;
+  // Work done by the tool = kinetic + elastic + plastic + damage + friction + the algorithmic terms,
+  // within 1 % (docs/cutting.md, "Energy balance").
+  std::printf("short cut: energy balance residual %.3f %% of the tool work (%.3f %% without the algorithmic terms)\n",
+              100 * r.balance_error, 100 * r.balance_error_without_algorithmic);
+  EXPECT_LT(std::abs(r.balance_error), 0.01) << "relative energy balance error " << r.balance_error;
 }
 
 // Merchant (1945) band for the cutting force per unit width at the reference conditions used by

@@ -60,7 +60,7 @@ def main(binary, scratch):
         if abs(float(r["cells_per_feed"]) - n) > 1e-6 or abs(float(r["cell_size_um"]) - 100.0 / n) > 0.1:
             fail(f"n{n}: resolution columns {r['cells_per_feed']}, {r['cell_size_um']}")
         parts = [float(r[k]) for k in ("plastic_work_fraction", "damage_fraction", "friction_fraction",
-                                       "kinetic_elastic_fraction", "unaccounted_fraction")]
+                                       "kinetic_elastic_fraction", "numerical_fraction")]
         if abs(sum(parts) - 1.0) > 0.02 or not 0.0 < parts[0] <= 1.0:
             fail(f"n{n}: energy partition {parts} does not add up to the tool's work")
         if float(r["mass_scaling_factor"]) != 1.0:  # 20 m/s: above the automatic scaling's speed

@@ -189,7 +189,7 @@ TEST(SceneValidation, ParticlesPerCellOutOfRange) {
   const std::string text = edit("rectangle =", "particles_per_cell = 0\nrectangle =");
   expect_error(text, "particles_per_cell",
                {"case.toml:" + std::to_string(line_of(text, "particles_per_cell")) +
-                    ":22: key 'body[0].particles_per_cell': must be an integer between 1 and 8",
+                    ":22: key 'body[0].particles_per_cell': must be in [1, 8] per direction, got 0",
                 "got 0"});
   expect_error(edit("rectangle =", "particles_per_cell = 2.5\nrectangle ="), "particles_per_cell",
                {"must be an integer", "got 2.5"});
@@ -216,7 +216,7 @@ TEST(SceneValidation, WrongTypes) {
 }
 
 TEST(SceneValidation, NonPositiveSizes) {
-  expect_error(edit("cell_size = 0.1", "cell_size = 0"), "cell_size", {"key 'grid.cell_size'", "positive", "got 0"});
+  expect_error(edit("cell_size = 0.1", "cell_size = 0"), "cell_size", {"key 'grid.cell_size'", "must be in [1e-09, 100] m", "got 0"});
   expect_error(edit("cell_size = 0.1", "cell_size = 2.0"), "cell_size",
                {"key 'grid.cell_size'", "at most the domain size (1 x 1)", "got 2.0"});
   expect_error(edit("max = [1.0, 1.0]", "max = [1.0, -1.0]"), "max = [1.0, -1.0]",
@@ -231,7 +231,7 @@ TEST(SceneValidation, MaterialConstants) {
   const std::string full = edit("library = \"elastic-unit\"",
                                 "density = 1000.0\nyoungs_modulus = 1.0e6\npoisson_ratio = 0.3");
   expect_error(edit("density = 1000.0", "density = -1000.0", full), "density",
-               {"key 'material[0].density'", "positive", "got -1000.0"});
+               {"key 'material[0].density'", "must be in (0, 100000] kg/m^3", "got -1000.0"});
   expect_error(edit("youngs_modulus = 1.0e6", "youngs_modulus = -1.0", full), "youngs_modulus",
                {"key 'material[0].youngs_modulus'", "got -1.0"});
   expect_error(edit("poisson_ratio = 0.3", "poisson_ratio = 0.5", full), "poisson_ratio",
@@ -247,7 +247,7 @@ TEST(SceneValidation, MaterialConstants) {
 TEST(SceneValidation, JohnsonCookMeltingAboveRoomTemperature) {
   expect_error(edit("library = \"elastic-unit\"", "library = \"ti64-seo-2005\"\nmelting_temperature = 250.0"),
                "melting_temperature",
-               {"key 'material[0].melting_temperature'", "greater than room_temperature (293 K)", "got 250.0"});
+               {"key 'material[0].melting_temperature'", "must be in (293, 10000] K (above room_temperature)", "got 250.0"});
   // Also when a full JC definition leaves out jc_A.
   const std::string jc = edit("library = \"elastic-unit\"",
                               "model = \"johnson_cook\"\ndensity = 1.0\nyoungs_modulus = 1.0\npoisson_ratio = 0.3\n"
@@ -266,10 +266,10 @@ TEST(SceneValidation, ChoicesListTheAllowedValues) {
 TEST(SceneValidation, RangesOfSolverAndThermal) {
   expect_error(edit("end_time = 1.0", "end_time = 1.0\ncfl = 1.5"), "cfl", {"key 'solver.cfl'", "(0, 1]"});
   expect_error(edit("end_time = 1.0", "end_time = 1.0\nflip_fraction = -0.1"), "flip", {"key 'solver.flip_fraction'"});
-  expect_error(edit("end_time = 1.0", "end_time = -1.0"), "end_time", {"key 'solver.end_time'", "positive"});
+  expect_error(edit("end_time = 1.0", "end_time = -1.0"), "end_time", {"key 'solver.end_time'", "must be in (0, 1000] s"});
   expect_error(kBase + "[[rigid_body]]\nname = \"tool\"\npolygon = [[0, 0], [1, 0], [0, 1]]\nfriction = -0.1\n",
-               "friction", {"key 'rigid_body[0].friction'", ">= 0"});
-  expect_error(edit("[solver]", "[thermal]\nleft = -5.0\n[solver]"), "left = -5", {"key 'thermal.left'", "positive"});
+               "friction", {"key 'rigid_body[0].friction'", "must be in [0, 2]"});
+  expect_error(edit("[solver]", "[thermal]\nleft = -5.0\n[solver]"), "left = -5", {"key 'thermal.left'", "must be in (0, 10000] K"});
   expect_error(edit("rectangle =", "temperature = 0\nrectangle ="), "temperature", {"key 'body[0].temperature'"});
 }
 

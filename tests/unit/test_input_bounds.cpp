@@ -1,0 +1,136 @@
+// Every numeric input is bounded (docs/reliability.md, "Input ranges"): non-finite values are
+// refused for every key, each key has a physical range, temperatures stay below the melting
+// point, and a run that cannot fit in memory or cannot finish is refused before allocation.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "core/run_estimate.hpp"
+#include "io/input_error.hpp"
+#include "io/scene_parser.hpp"
+
+namespace mpmcut {
+namespace {
+
+const std::string kDisk = R"(title = "disk"
+[grid]
+cell_size = 0.1
+min = [0.0, 0.0]
+max = [2.0, 2.0]
+[solver]
+end_time = 1.0
+[[material]]
+name = "m"
+library = "elastic-unit"
+[[body]]
+name = "b"
+material = "m"
+disk = { center = [1.0, 1.0], radius = 0.3 }
+)";
+
+// The InputError message of parsing with overrides; "" if it parses.
+std::string error_of(const std::string& text, const std::vector<std::string>& overrides) {
+  try {
+    parse_scene(text, "case.toml", overrides);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string cutting_error(const std::vector<std::string>& overrides) {
+  try {
+    default_cutting_scene(overrides);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(InputBounds, NonFiniteValuesAreRefusedForEveryKindOfKey) {
+  for (const char* value : {"inf", "-inf", "nan", "+inf"}) {
+    for (const std::string key : {"solver.end_time", "solver.cfl", "grid.cell_size", "body[0].temperature"}) {
+      const std::string m = error_of(kDisk, {key + "=" + value});
+      EXPECT_NE(m.find("key '" + key + "'"), std::string::npos) << m;
+      EXPECT_NE(m.find("finite"), std::string::npos) << m;
+    }
+    // Inside pairs and polygons, too.
+    EXPECT_NE(error_of(kDisk, {std::string("body[0].velocity=[0, ") + value + "]"}).find("finite"), std::string::npos);
+    EXPECT_NE(error_of(kDisk, {std::string("grid.max=[") + value + ", 2]"}).find("finite"), std::string::npos);
+  }
+}
+
+// The issue's reports: each one hung or failed at step 1 before.
+TEST(InputBounds, IssueReportsAreInputErrorsNamingKeyRangeAndValue) {
+  std::string m = cutting_error({"cutting.cut_length=inf"});
+  EXPECT_NE(m.find("key 'cutting.cut_length': must be a finite number, got inf"), std::string::npos) << m;
+  m = cutting_error({"cutting.cut_length=1e308"});
+  EXPECT_NE(m.find("key 'cutting.cut_length': must be in (0, 1] m, got 1e+308"), std::string::npos) << m;
+  m = cutting_error({"cutting.width_of_cut=inf"});
+  EXPECT_NE(m.find("key 'cutting.width_of_cut'"), std::string::npos) << m;
+  m = cutting_error({"cutting.initial_temperature=1e308"});
+  EXPECT_NE(m.find("key 'cutting.initial_temperature': must be in (0, 10000) K, got 1e+308"), std::string::npos) << m;
+  // Below the melting point of the workpiece material (ti64-cutting: 1878 K).
+  m = cutting_error({"cutting.initial_temperature=1900"});
+  EXPECT_NE(m.find("must be in (0, 1878) K (below the melting temperature), got 1900"), std::string::npos) << m;
+  EXPECT_EQ(cutting_error({"cutting.initial_temperature=1800"}), "");
+  m = error_of(kDisk, {"solver.end_time=1e308"});
+  EXPECT_NE(m.find("key 'solver.end_time': must be in (0, 1000] s, got 1e+308"), std::string::npos) << m;
+  // The location: file and line for a value in the file, the override for a --set.
+  const std::string text = std::string(kDisk).replace(kDisk.find("end_time = 1.0"), 14, "end_time = 5e3");
+  m = error_of(text, {});
+  EXPECT_TRUE(m.starts_with("case.toml:7:12: key 'solver.end_time': must be in (0, 1000] s, got 5000.0")) << m;
+}
+
+TEST(InputBounds, UpperBoundsOfLengthsSpeedsFactorsAndMaterials) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"body[0].velocity=[2e4, 0]", "key 'body[0].velocity': each component must be in [-10000, 10000] m/s"},
+      {"solver.contact_distance_cells=100", "must be in [0, 10] cells"},
+      {"solver.max_steps=10000000000000", "must be in [0, 1e+12] steps"},
+      {"material[0].density=1e9", "key 'material[0].density': must be in (0, 100000] kg/m^3"},
+      {"material[0].youngs_modulus=1e20", "must be in (0, 1e+13] Pa"},
+      {"body[0].temperature=1e5", "key 'body[0].temperature': must be in (0, 10000] K"},
+      {"grid.max=[2e3, 2]", "key 'grid.max': each component must be in [-1000, 1000] m"},
+  };
+  for (const auto& [override, expected] : cases) {
+    const std::string m = error_of(kDisk, {override});
+    EXPECT_NE(m.find(expected), std::string::npos) << override << " -> " << m;
+  }
+}
+
+TEST(InputBounds, MemoryEstimateRefusesWhatDoesNotFit) {
+  const Scene scene = parse_scene(kDisk, "case.toml", {"grid.cell_size=1e-4"});
+  const RunEstimate e = estimate_run(scene);
+  // 20 000 x 20 000 cells; the disk of radius 0.3 at 2 particles per cell: pi 0.09 / (5e-5)^2.
+  EXPECT_NEAR(e.grid_nodes, 20007.0 * 20007.0, 1.0);
+  EXPECT_NEAR(e.particles, 3.14159 * 0.09 / 2.5e-9, 0.01 * e.particles);
+  try {
+    check_run_fits(scene, e, 1e9);  // a machine with 1 GB
+    ADD_FAILURE() << "a 120 GB run was accepted on a 1 GB machine";
+  } catch (const InputError& err) {
+    const std::string m = err.what();
+    EXPECT_NE(m.find("the run needs about"), std::string::npos) << m;
+    EXPECT_NE(m.find("GiB of memory"), std::string::npos) << m;
+    EXPECT_NE(m.find("grid.cell_size"), std::string::npos) << m;
+  }
+  EXPECT_NO_THROW(check_run_fits(scene, e, 1e12));
+  // The real machine: the estimate of a shipped-size case fits.
+  EXPECT_NO_THROW(check_run_fits(parse_scene(kDisk, "case.toml", {})));
+}
+
+TEST(InputBounds, StepEstimateRefusesRunsThatCannotFinish) {
+  // Steps land on every output time: a tiny snapshot interval is a tiny step.
+  const Scene tiny = parse_scene(kDisk, "case.toml", {"output.snapshot_interval=1e-300"});
+  EXPECT_GT(estimate_run(tiny).steps, kMaxSteps);
+  EXPECT_THROW(check_run_fits(tiny, estimate_run(tiny), 1e12), InputError);
+  const Scene fixed = parse_scene(kDisk, "case.toml", {"solver.fixed_time_step=1e-12", "solver.end_time=1"});
+  EXPECT_THROW(check_run_fits(fixed, estimate_run(fixed), 1e12), InputError);
+  // max_steps caps the count.
+  const Scene capped = parse_scene(kDisk, "case.toml", {"solver.fixed_time_step=1e-12", "solver.max_steps=10"});
+  EXPECT_EQ(estimate_run(capped).steps, 10.0);
+  EXPECT_NO_THROW(check_run_fits(capped, estimate_run(capped), 1e12));
+}
+
+}  // namespace
+}  // namespace mpmcut
