@@ -57,4 +57,26 @@ inline Scene uniaxial_strain_impact(const MaterialParameters& material, double L
   return s;
 }
 
+// A slab [0, 1] x [0, 1/cells] m at 300 K whose left face is held at 400 K from t = 0, with
+// rho = c = k = 1 (alpha = 1 m^2/s): the semi-infinite solution is
+// T = 300 + 100 erfc(x / (2 sqrt(t))) away from the insulated right end. A soft solid at rest
+// (E = youngs_modulus) so the mechanics stays still; a stiff one makes the step sub-cycle conduction.
+inline Scene heat_slab_scene(ShapeFunctionKind kind, int cells, double youngs_modulus = 1.0) {
+  const double L = 1.0, h = L / cells;
+  Scene s;
+  s.grid = {h, Vec2(0, 0), Vec2(L, h)};
+  s.solver.shape_function = kind;
+  s.solver.cfl = 0.4;
+  s.thermal.conduction = true;
+  s.thermal.left = 400.0;
+  MaterialParameters m = elastic_material("slab", youngs_modulus, 0.0, 1.0);
+  m.specific_heat = 1.0;
+  m.thermal_conductivity = 1.0;
+  s.materials.push_back(m);
+  BodySpec b = rectangle_body("slab", "slab", Vec2(0, 0), Vec2(L, h), 2);
+  b.temperature = 300.0;
+  s.bodies.push_back(b);
+  return s;
+}
+
 }  // namespace mpmcut::testing

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "../support/parse_errors.hpp"
 #include "../support/ti64_parameters.hpp"
 #include "cutting/mass_scaling.hpp"
 #include "io/input_error.hpp"
@@ -23,12 +24,7 @@ cell_size = 20e-6
 )";
 
 std::string error_of(const std::string& text, const std::vector<std::string>& overrides = {}) {
-  try {
-    parse_scene(text, "case.toml", overrides);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return mpmcut::testing::parse_error_of(text, overrides);
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 // overrides, and write_scene -> parse_scene round trips.
 #include <gtest/gtest.h>
 
+#include "../support/parse_errors.hpp"
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -73,12 +75,7 @@ int line_of(const std::string& text, const std::string& marker) {
 
 // The InputError message that parsing `text` gives ("" if it parses).
 std::string error_of(const std::string& text, const std::vector<std::string>& overrides = {}) {
-  try {
-    parse_scene(text, "case.toml", overrides);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return testing::parse_error_of(text, overrides);
 }
 
 // Expects an error at `line` (of `marker`) that contains every one of `parts`.

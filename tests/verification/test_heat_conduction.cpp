@@ -11,27 +11,9 @@ using namespace mpmcut;
 using namespace mpmcut::testing;
 
 namespace {
-Scene slab_scene(ShapeFunctionKind kind, int cells, double youngs_modulus = 1.0) {
-  const double L = 1.0, h = L / cells;
-  Scene s;
-  s.grid = {h, Vec2(0, 0), Vec2(L, h)};
-  s.solver.shape_function = kind;
-  s.solver.cfl = 0.4;
-  s.thermal.conduction = true;
-  s.thermal.left = 400.0;
-  // rho = c = k = 1: alpha = 1 m^2/s; a soft solid at rest so the mechanics stays still.
-  MaterialParameters m = elastic_material("slab", youngs_modulus, 0.0, 1.0);
-  m.specific_heat = 1.0;
-  m.thermal_conductivity = 1.0;
-  s.materials.push_back(m);
-  BodySpec b = rectangle_body("slab", "slab", Vec2(0, 0), Vec2(L, h), 2);
-  b.temperature = 300.0;
-  s.bodies.push_back(b);
-  return s;
-}
 
 double max_error_vs_erfc(ShapeFunctionKind kind, int cells, double t_end, double youngs_modulus = 1.0) {
-  Simulation sim(slab_scene(kind, cells, youngs_modulus));
+  Simulation sim(heat_slab_scene(kind, cells, youngs_modulus));
   while (sim.time() < t_end) sim.step(t_end - sim.time());
   const double alpha = 1.0, T0 = 300.0, Ts = 400.0;
   double err = 0.0;
@@ -63,7 +45,7 @@ TEST(HeatConduction, ErrorFallsWithCellSize) {
 
 // Insulated everywhere: conduction only moves heat, the total m c T is conserved.
 TEST(HeatConduction, InsulatedBodyConservesHeat) {
-  Scene s = slab_scene(ShapeFunctionKind::UGimp, 50);
+  Scene s = heat_slab_scene(ShapeFunctionKind::UGimp, 50);
   s.thermal.left.reset();
   Simulation sim(s);
   auto& P = sim.particles();

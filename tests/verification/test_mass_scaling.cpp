@@ -14,24 +14,11 @@ using namespace mpmcut::testing;
 
 namespace {
 
-// The sub-cycled slab of test_heat_conduction.cpp: a stiff solid at rest (E = 1e7 Pa, rho = c =
-// k = 1, alpha = 1 m^2/s) whose left face is held at 400 K from t = 0; T follows
-// T0 + (Ts - T0) erfc(x / (2 sqrt(alpha t))).
+// The sub-cycled slab of test_heat_conduction.cpp: a stiff solid at rest (E = 1e7 Pa) whose left
+// face is held at 400 K from t = 0 (support/scene_builders.hpp).
 Scene slab(double mass_scaling_factor) {
-  const double L = 1.0, h = L / 100;
-  Scene s;
-  s.grid = {h, Vec2(0, 0), Vec2(L, h)};
-  s.solver.cfl = 0.4;
+  Scene s = heat_slab_scene(ShapeFunctionKind::UGimp, 100, 1e7);
   s.solver.mass_scaling_factor = mass_scaling_factor;
-  s.thermal.conduction = true;
-  s.thermal.left = 400.0;
-  MaterialParameters m = elastic_material("slab", 1e7, 0.0, 1.0);
-  m.specific_heat = 1.0;
-  m.thermal_conductivity = 1.0;
-  s.materials.push_back(m);
-  BodySpec b = rectangle_body("slab", "slab", Vec2(0, 0), Vec2(L, h), 2);
-  b.temperature = 300.0;
-  s.bodies.push_back(b);
   return s;
 }
 
