@@ -16,6 +16,7 @@ struct BenchOptions {
   int cutting_steps = 300;       // timed steps of the cutting case (per thread count)
   std::vector<int> threads{1, 2};
   std::string which = "all";     // elastic | plastic | cutting | all
+  bool background_load = false;  // keep one core busy with a spinning process while measuring
 };
 
 int run_benchmark(const BenchOptions& options);

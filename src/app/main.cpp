@@ -43,6 +43,10 @@ int main(int argc, char** argv) {
                 "For studies run in parts: if the result directory holds the complete run of the same scene, keep it "
                 "(exit 0); if it holds an unfinished one with a checkpoint, resume it; else run afresh (as --force)");
   run->add_flag("--no-progress", no_progress, "Do not print progress");
+  bool fixed_threads = false;
+  run->add_flag("--fixed-threads", fixed_threads,
+                "Always use --threads threads (default: the fastest of 1..threads, re-timed every 10 s, so that a busy "
+                "core does not slow the run down; results are the same either way)");
   bool no_plots = false;
   run->add_flag("--no-plots", no_plots, "Do not draw the PNG pictures at the end of a cutting run");
   bool check_only = false;
@@ -89,6 +93,8 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"elastic", "plastic", "cutting", "all"}));
   bench->add_option("--cutting-steps", bench_options.cutting_steps, "Timed steps of the cutting case per thread count")
       ->check(CLI::Range(1, 1000000));
+  bench->add_flag("--background-load", bench_options.background_load,
+                  "Keep one core busy with a spinning process while measuring (a machine doing other work)");
 
   add_plot_command(app);
   add_sweep_command(app);
@@ -136,6 +142,7 @@ int main(int argc, char** argv) {
   }
   run_options.out_dir = out_dir;
   run_options.progress = !no_progress;
+  run_options.tune_threads = !fixed_threads;
   run_options.checkpoint_every = parse_checkpoint_interval(checkpoint_every);
   int code = -1;
   if (keep_complete) {

@@ -22,6 +22,7 @@
 #include "app/stop_signal.hpp"
 #include "core/run_estimate.hpp"
 #include "core/simulation.hpp"
+#include "core/thread_tuner.hpp"
 #include "io/atomic_file.hpp"
 #include "io/checkpoint.hpp"
 #include "io/csv_writer.hpp"
@@ -310,7 +311,9 @@ class CaseRun {
         threads_(threads),
         sim_(scene),
         scene_hash_(scene_hash(scene)),
-        store_(root_) {}
+        store_(root_) {
+    if (options.tune_threads && threads > 1) tuner_.emplace(threads);
+  }
 
   // A new run: the outputs at t = 0 and the first output times.
   void start() {
@@ -372,6 +375,7 @@ class CaseRun {
   fs::path root_;
   RunOptions options_;
   int threads_;
+  std::optional<ThreadTuner> tuner_;  // picks 1..threads_ by timing (busy machines); none = fixed
   Simulation sim_;
   std::uint64_t scene_hash_;
   CheckpointStore store_;
@@ -406,7 +410,9 @@ int CaseRun::run_to_end() {
         // Land exactly on the next output time (and on the end time).
         double target = std::min(next_snapshot_, end);
         if (hist_dt > 0) target = std::min(target, next_history_);
+        if (tuner_) tuner_->before_step();
         sim_.step(target - sim_.time());
+        if (tuner_) tuner_->after_step();
         out.after_step();
         if (hist_dt <= 0 || sim_.time() >= next_history_ - eps) {
           out.history_row();
@@ -453,6 +459,7 @@ int CaseRun::run_to_end() {
   const double wall_s = wall_before_s_ + session_wall_s();
   try {
     nlohmann::json summary = summary_json(sim_, status, wall_s, message, threads_);
+    if (tuner_) summary["thread_tuning"] = {{"threads_in_use_at_end", tuner_->chosen()}, {"trials", tuner_->trials()}};
     if (!last_checkpoint_.empty()) summary["last_checkpoint"] = "checkpoints/" + last_checkpoint_;
     if (!resumed_from_.empty()) summary["resumed_from"] = "checkpoints/" + resumed_from_;
     if (out_) out_->finish(summary);

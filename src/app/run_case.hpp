@@ -30,6 +30,7 @@ struct RunOptions {
   bool force = false;             // run: overwrite an existing result directory;
                                   // resume: continue a directory whose run is already complete
   int threads = 0;                // OpenMP threads; 0 = all cores
+  bool tune_threads = true;       // use the fastest of 1..threads, re-timed every 10 s (core/thread_tuner.hpp)
   bool progress = true;           // progress bar / lines on stderr
   CheckpointInterval checkpoint_every;
   bool checkpoint_every_given = true;  // resume: false = keep the interrupted run's interval
