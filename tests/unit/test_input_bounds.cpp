@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/run_estimate.hpp"
+#include "../support/parse_errors.hpp"
 #include "io/input_error.hpp"
 #include "io/scene_parser.hpp"
 
@@ -31,12 +32,7 @@ disk = { center = [1.0, 1.0], radius = 0.3 }
 
 // The InputError message of parsing with overrides; "" if it parses.
 std::string error_of(const std::string& text, const std::vector<std::string>& overrides) {
-  try {
-    parse_scene(text, "case.toml", overrides);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return testing::parse_error_of(text, overrides);
 }
 
 std::string cutting_error(const std::vector<std::string>& overrides) {
