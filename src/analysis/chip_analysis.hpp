@@ -3,7 +3,7 @@
 // free-surface profile and segmentation, the shear-band angle, the chip thickness ratio and the
 // shear angle it implies, and the peak temperatures of the primary shear zone and the tool-chip
 // interface. A pure function of the particles and the cut's geometry, so that it runs the same on
-// the final in-memory state (cutting/chip_observer.hpp) and on a snapshot of an old run
+// the final in-memory state (run/chip_observer.hpp) and on a snapshot of an old run
 // (`mpmcut analyze`). Definitions, thresholds and limitations: docs/analysis.md.
 #include <cstddef>
 #include <optional>

@@ -9,11 +9,11 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis/chip_analysis.hpp"
-#include "app/run_case.hpp"
+#include "run/run_case.hpp"
 #include "io/input_error.hpp"
-#include "io/json_summary.hpp"
+#include "run/run_summary.hpp"
 #include "io/pvd_writer.hpp"
-#include "io/scene_parser.hpp"
+#include "run/case_loading.hpp"
 #include "io/vtu_reader.hpp"
 
 namespace mpmcut {
@@ -74,7 +74,7 @@ int analyze(const fs::path& dir, const std::string& snapshot) {
     throw AnalyzeError(fmt::format("'{}' is not a cutting run (its scene.toml has no [cutting_process] record): "
                                    "the chip analysis needs the cut's parameters",
                                    dir.string()));
-  nlohmann::json summary = read_json(summary_file);
+  RunSummary summary = read_summary(summary_file);
 
   const PvdSeries::Entry entry = pick_snapshot(snapshots_of(dir), snapshot);
   const fs::path vtu = dir / entry.file;
@@ -87,9 +87,9 @@ int analyze(const fs::path& dir, const std::string& snapshot) {
   nlohmann::json chip = chip_json(a), temperature = temperature_json(a);
   chip["source"] = entry.file;
   temperature["source"] = entry.file;
-  summary["chip"] = chip;
-  summary["temperature"] = temperature;
-  write_json_atomically(summary_file, summary);
+  summary.sections["chip"] = chip;
+  summary.sections["temperature"] = temperature;
+  write_summary(summary_file, summary);
   std::cout << fmt::format("results merged into {} (\"chip\", \"temperature\")\n", summary_file.string());
   return kExitComplete;
 }

@@ -18,7 +18,7 @@
 #include "core/simulation.hpp"
 #include "core/thread_tuner.hpp"
 #include "io/material_library.hpp"
-#include "io/scene_parser.hpp"
+#include "run/case_loading.hpp"
 
 namespace mpmcut {
 

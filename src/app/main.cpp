@@ -13,11 +13,11 @@
 #include "app/sweep_command.hpp"
 #include "app/calibrate_command.hpp"
 #include "app/validate_command.hpp"
-#include "app/run_case.hpp"
+#include "run/run_case.hpp"
 #include "app/stop_signal.hpp"
 #include "core/run_estimate.hpp"
 #include "io/input_error.hpp"
-#include "io/scene_parser.hpp"
+#include "run/case_loading.hpp"
 
 int main(int argc, char** argv) {
   using namespace mpmcut;
@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
 
   std::string case_file;
   RunOptions run_options;
+  run_options.stop = &program_stop_token();
   std::string out_dir;
   std::vector<std::string> overrides;
   bool no_progress = false;
@@ -69,6 +70,7 @@ int main(int argc, char** argv) {
       ->check(checkpoint_check);
 
   RunOptions resume_options;
+  resume_options.stop = &program_stop_token();
   std::string resume_dir;
   std::string resume_checkpoint_every = "30min";
   bool resume_no_progress = false;
@@ -162,7 +164,7 @@ int main(int argc, char** argv) {
   if (code < 0) code = run_case(scene, run_options);
   // A signal that came after the last step: the results are complete, but the program stops here
   // (no pictures) with the documented code.
-  if (stop_requested()) {
+  if (program_stop_token().stop_requested()) {
     std::cerr << "interrupted after the run completed: results complete, pictures not drawn\n";
     return kExitInterrupted;
   }

@@ -11,8 +11,7 @@ namespace mpmcut {
 
 namespace {
 
-std::atomic<int> g_requests{0};
-std::atomic<bool> g_defer{false};
+StopToken g_stop;
 // Children to terminate on an immediate exit: +pid (the process) or -pid (its group), 0 = free.
 // A fixed array of lock-free atomics: the signal handler may read it at any moment.
 constexpr int kMaxChildren = 64;
@@ -24,8 +23,7 @@ void say(const char* text) {
 }
 
 extern "C" void on_stop_signal(int) {
-  const int n = g_requests.fetch_add(1) + 1;
-  if (g_defer.load() && n == 1) return;  // the step loop stops after this step
+  if (g_stop.request_stop()) return;  // the run loop stops after this step
   for (auto& child : g_children) {
     const pid_t target = child.load();
     if (target != 0) ::kill(target, SIGTERM);
@@ -47,16 +45,7 @@ void install_stop_handlers() {
   sigaction(SIGTERM, &sa, nullptr);
 }
 
-int stop_requests() { return g_requests.load(); }
-
-DeferStops::DeferStops() {
-  install_stop_handlers();
-  // A signal that came before the loop already ended the program; none can be pending here.
-  g_requests = 0;
-  g_defer = true;
-}
-
-DeferStops::~DeferStops() { g_defer = false; }
+StopToken& program_stop_token() { return g_stop; }
 
 void register_child(pid_t pid, bool group) {
   for (auto& child : g_children) {

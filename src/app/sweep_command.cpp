@@ -13,7 +13,8 @@
 #include "app/plot_command.hpp"
 #include "app/stop_signal.hpp"
 #include "studies/task_farm.hpp"
-#include "io/scene_parser.hpp"
+#include "run/case_loading.hpp"
+#include "run/run_summary.hpp"
 #include "io/atomic_file.hpp"
 
 namespace mpmcut {
@@ -99,9 +100,12 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
   if (completed && has_subcommand(app, "analyze")) {
     std::vector<ChildRun> analyses;
     for (std::size_t i = 0; i < cases.size(); ++i) {
-      std::ifstream in(cases[i].dir / "summary.json");
-      const json s = in ? json::parse(in, nullptr, false) : json();
-      if (!s.is_object() || s.contains("chip")) continue;
+      std::optional<RunSummary> summary;
+      try {
+        summary = read_summary(cases[i].dir / "summary.json");
+      } catch (const std::exception&) {
+      }
+      if (!summary || summary->sections.contains("chip")) continue;
       ChildRun a;
       a.name = runs[i].name + " (analyze)";
       a.args = {"analyze", cases[i].dir.string()};

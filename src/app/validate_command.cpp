@@ -13,11 +13,11 @@
 
 #include "analysis/chip_analysis.hpp"
 #include "app/plot_command.hpp"
-#include "app/run_case.hpp"
+#include "run/run_case.hpp"
 #include "app/sweep_command.hpp"
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
-#include "io/scene_parser.hpp"
+#include "run/case_loading.hpp"
 #include "studies/measured_conditions.hpp"
 #include "studies/task_farm.hpp"
 #include "studies/validation_metrics.hpp"

@@ -15,7 +15,6 @@
 
 #include <fmt/format.h>
 
-#include "io/scene_writer.hpp"
 
 namespace mpmcut {
 
@@ -263,17 +262,6 @@ void write_small_file_synced(const fs::path& file, const std::string& text) {
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
-
-std::uint64_t scene_hash(const Scene& scene) {
-  std::ostringstream text;
-  write_scene(scene, text);
-  std::uint64_t h = 14695981039346656037ull;  // FNV-1a 64
-  for (const unsigned char c : text.str()) {
-    h ^= c;
-    h *= 1099511628211ull;
-  }
-  return h;
-}
 
 void write_checkpoint_file(const fs::path& file, const Simulation& sim, std::uint64_t scene_hash,
                            const RunLoopState& loop) {

@@ -85,9 +85,7 @@ struct Checkpoint {
 // 5: EnergyTotals' algorithmic terms (FLIP/PIC blend, contact safeguard, removed) and initial energy
 inline constexpr std::uint32_t kCheckpointFormatVersion = 5;
 
-// Hash (64-bit FNV-1a) of the expanded scene as write_scene() prints it: equal for scenes that
-// are equal, whatever file they came from.
-std::uint64_t scene_hash(const Scene& scene);
+// scene_hash(): run/case_loading.hpp (the expanded scene includes records of layers above io).
 
 // Writes a checkpoint of `sim` to `file` (the whole file: header and payload) and fsyncs it.
 // Not atomic by itself; CheckpointStore::write is. Throws std::runtime_error naming the file

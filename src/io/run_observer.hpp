@@ -1,6 +1,6 @@
 #pragma once
 // An observer reads the simulation between steps and writes outputs; it never changes it.
-// The run loop (app/run_case.cpp) owns a list of them: the generic outputs and, for cutting
+// The run loop (run/case_run.cpp) owns a list of them: the generic outputs and, for cutting
 // scenes, the force and chip outputs of the cutting module.
 #include <string>
 #include <string_view>

@@ -1,8 +1,5 @@
 #include "io/scene_parser.hpp"
 
-#include "cutting/cutting_scene.hpp"
-#include "io/cutting_input.hpp"
-
 #include <cctype>
 #include <cmath>
 #include <fstream>
@@ -10,7 +7,6 @@
 
 #include <fmt/format.h>
 
-#include "io/embedded_text.hpp"
 #include "io/material_library.hpp"
 #include "io/toml_reader.hpp"
 
@@ -29,11 +25,6 @@ const Range kTime = Range::open_closed(0.0, 1000.0, "s");
 const Range kOutputInterval = Range::closed(0.0, 1000.0, "s", "0 = first and last only / every step");
 constexpr double kMaxTemperature = 1e4;  // K: above every melting point
 
-// A temperature below the material's melting point (where it has one).
-Range temperature_range(const MaterialParameters& m) {
-  if (m.melting_temperature > 0.0) return Range::open(0.0, m.melting_temperature, "K", "below the melting temperature");
-  return Range::open_closed(0.0, kMaxTemperature, "K");
-}
 
 // ---------------------------------------------------------------------------------------------
 // --set overrides: edit the TOML tree before it is read, so that an overridden value is
@@ -240,7 +231,9 @@ BoundarySpec read_boundaries(std::optional<TableReader> t) {
 }
 
 // `base`: the values a key takes when absent; end_time is required unless the base has one.
-SolverSpec read_solver(TableReader t, SolverSpec s = {}) {
+}  // namespace
+
+SolverSpec read_solver(TableReader t, SolverSpec s) {
   s.shape_function = t.choice<ShapeFunctionKind>(
       "shape_function", {{"ugimp", ShapeFunctionKind::UGimp}, {"linear", ShapeFunctionKind::Linear}}, s.shape_function);
   s.scheme = t.choice<TimeScheme>("scheme", {{"musl", TimeScheme::MUSL}, {"usl", TimeScheme::USL}}, s.scheme);
@@ -271,7 +264,7 @@ SolverSpec read_solver(TableReader t, SolverSpec s = {}) {
   return s;
 }
 
-OutputSpec read_output(std::optional<TableReader> t, OutputSpec o = {}) {
+OutputSpec read_output(std::optional<TableReader> t, OutputSpec o) {
   if (!t) return o;
   o.snapshot_interval =
       t->number("snapshot_interval", o.snapshot_interval, Range::closed(0.0, 1000.0, "s", "0 = first and last only"));
@@ -280,6 +273,8 @@ OutputSpec read_output(std::optional<TableReader> t, OutputSpec o = {}) {
   t->reject_unknown_keys();
   return o;
 }
+
+namespace {
 
 ThermalSpec read_thermal(std::optional<TableReader> t) {
   ThermalSpec th;
@@ -376,58 +371,15 @@ RigidBodySpec read_rigid_body(TableReader t) {
   return r;
 }
 
-// The workpiece material of a [cutting] case: a [[material]] of the file, else a library set.
-MaterialParameters cutting_material(TableReader& top, TableReader& cutting, const CuttingParameters& params) {
-  const std::string& name = params.material;
-  const MaterialLibrary& library = builtin_material_library();
-  std::optional<MaterialParameters> found;
-  for (TableReader& t : top.array_of_tables("material")) {
-    MaterialParameters m = read_material(t, library);
-    if (m.name == name) found = m;
-  }
-  const MaterialParameters* m = found ? &*found : library.find(name);
-  if (m != nullptr) {
-    // The workpiece starts solid: at or above the melting point the flow stress is zero.
-    cutting.check("initial_temperature", params.initial_temperature, temperature_range(*m));
-    return *m;
-  }
-  std::string known;
-  for (const auto& n : library.names()) known += (known.empty() ? "" : ", ") + ("\"" + n + "\"");
-  cutting.fail("material", fmt::format("no [[material]] and no library set named \"{}\"; library sets: {}", name, known));
+}  // namespace
+
+Range temperature_range(const MaterialParameters& m) {
+  if (m.melting_temperature > 0.0) return Range::open(0.0, m.melting_temperature, "K", "below the melting temperature");
+  return Range::open_closed(0.0, kMaxTemperature, "K");
 }
 
-// A [cutting] case: the preset builds grid, workpiece, tool, boundaries and outputs from the
-// process parameters; [solver] and [output] may still adjust the numerics.
-Scene read_cutting_case(TableReader& top) {
-  for (const char* key : {"grid", "body", "rigid_body", "boundaries", "thermal", "body_force", "cutting_process"})
-    if (top.has(key))
-      top.fail(key, "not allowed in a [cutting] case, which builds its own grid, bodies, tool and boundaries; "
-                    "to edit those, run the case once and edit the expanded scene.toml in its result directory");
-  TableReader cutting = top.table("cutting");
-  const CuttingParameters params = read_cutting_parameters(cutting);
-  const MaterialParameters material = cutting_material(top, cutting, params);
+Scene read_scene_tables(TableReader& top) {
   Scene scene;
-  try {
-    scene = build_cutting_scene(params, material);
-  } catch (const std::invalid_argument& e) {
-    cutting.fail_table(e.what());
-  }
-  scene.title = top.string("title", scene.title);
-  if (auto t = top.optional_table("solver")) scene.solver = read_solver(*t, scene.solver);
-  scene.output = read_output(top.optional_table("output"), scene.output);
-  top.reject_unknown_keys();
-  return scene;
-}
-
-Scene read_scene(const toml::table& root, const std::shared_ptr<const InputSource>& source) {
-  TableReader top(root, "", source);
-  if (top.has("cutting")) {
-    Scene scene = read_cutting_case(top);
-    scene.source_file = source->name;
-    return scene;
-  }
-  Scene scene;
-  scene.source_file = source->name;
   scene.title = top.string("title", "");
   scene.grid = read_grid(top.table("grid"));
   scene.boundaries = read_boundaries(top.optional_table("boundaries"));
@@ -466,25 +418,17 @@ Scene read_scene(const toml::table& root, const std::shared_ptr<const InputSourc
     scene.rigid_bodies.push_back(read_rigid_body(t));
     claim_name(t, scene.rigid_bodies.back().name);
   }
-  // An expanded cutting scene remembers its process, so that its force outputs are written.
-  if (auto t = top.optional_table("cutting_process")) {
-    scene.cutting = read_cutting_parameters(*t);
-    if (scene.rigid_bodies.empty()) t->fail_table("[cutting_process] needs the tool as the first [[rigid_body]]");
-  }
-  top.reject_unknown_keys();
   return scene;
 }
 
-}  // namespace
-
-Scene parse_scene(std::string_view toml_text, const std::string& source_name, const std::vector<std::string>& overrides) {
-  toml::table root = parse_toml(toml_text, source_name);
-  auto source = std::make_shared<InputSource>(InputSource{source_name, {}});
-  for (const std::string& o : overrides) apply_override(root, o, *source);
-  return read_scene(root, source);
+CaseTree parse_case_tree(std::string_view toml_text, const std::string& source_name,
+                         const std::vector<std::string>& overrides) {
+  CaseTree tree{parse_toml(toml_text, source_name), std::make_shared<InputSource>(InputSource{source_name, {}})};
+  for (const std::string& o : overrides) apply_override(tree.root, o, *tree.source);
+  return tree;
 }
 
-Scene load_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
+std::string read_case_text(const std::filesystem::path& file) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(file, ec))
     throw InputError(fmt::format("{}: cannot read case file: {}", file.string(),
@@ -493,21 +437,7 @@ Scene load_scene(const std::filesystem::path& file, const std::vector<std::strin
   std::ostringstream text;
   text << in.rdbuf();
   if (!in) throw InputError(fmt::format("{}: cannot read case file", file.string()));
-  return parse_scene(text.str(), file.string(), overrides);
-}
-
-Scene default_cutting_scene(const std::vector<std::string>& overrides) {
-  for (const EmbeddedText& file : embedded_texts())
-    if (file.path == "cases/ti64_default.toml")
-      return parse_scene(file.text, "built-in " + std::string(file.path), overrides);
-  throw InputError("the built-in default case is missing from this build");
-}
-
-Scene default_elastic_demo_scene(const std::vector<std::string>& overrides) {
-  for (const EmbeddedText& file : embedded_texts())
-    if (file.path == "cases/elastic_demo.toml")
-      return parse_scene(file.text, "built-in " + std::string(file.path), overrides);
-  throw InputError("the built-in demo case is missing from this build");
+  return text.str();
 }
 
 }  // namespace mpmcut

@@ -1,7 +1,5 @@
 #include "io/scene_writer.hpp"
 
-#include "io/cutting_input.hpp"
-
 #include <fmt/format.h>
 
 namespace mpmcut {
@@ -109,7 +107,7 @@ void write_material(const MaterialParameters& m, std::ostream& out) {
   line("max_damage", m.max_damage);
 }
 
-void write_scene(const Scene& s, std::ostream& out) {
+void write_scene_tables(const Scene& s, std::ostream& out) {
   out << "# Complete mpmcut case: every key explicit (docs/input.md).\n";
   out << "title = " << str(s.title) << "\n";
   out << "body_force = " << vec(s.body_force) << "\n";
@@ -171,11 +169,6 @@ void write_scene(const Scene& s, std::ostream& out) {
     out << "rounding_radius = " << num(r.rounding_radius) << "\n";
     out << "velocity = " << vec(r.velocity) << "\n";
     out << "friction = " << num(r.friction) << "\n";
-  }
-  if (s.cutting) {
-    out << "\n# The process this scene was built from (the tool is the first rigid body); it makes the run\n"
-           "# write forces.csv and the cutting results. Edit the scene above, not this record.";
-    write_cutting_parameters(*s.cutting, out, "cutting_process");
   }
 }
 

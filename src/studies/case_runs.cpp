@@ -17,15 +17,14 @@
 #include <thread>
 
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 
 #include "io/atomic_file.hpp"
+#include "run/run_summary.hpp"
 
 namespace mpmcut {
 
 namespace {
 
-using json = nlohmann::json;
 namespace fs = std::filesystem;
 
 volatile std::sig_atomic_t g_stop_signals = 0;
@@ -89,37 +88,6 @@ std::string last_lines(const fs::path& file, int count) {
   for (std::size_t i = lines.size() > std::size_t(count) ? lines.size() - count : 0; i < lines.size(); ++i)
     out += (out.empty() ? "" : " | ") + lines[i];
   return out;
-}
-
-std::optional<double> number_of(const json& v) {
-  if (v.is_number()) return v.get<double>();
-  if (v.is_object()) {
-    for (const char* k : {"mean", "value"})
-      if (v.contains(k) && v[k].is_number()) return v[k].get<double>();
-  }
-  return std::nullopt;
-}
-
-// The analysis (mpmcut analyze) names its results with units in the keys; accept the stems below with any
-// of the given unit suffixes, in `obj` or one level down (e.g. chip.segmentation.pitch_m).
-std::optional<double> find_quantity(const json& obj, const std::vector<std::string>& stems,
-                                    const std::vector<std::pair<std::string, double>>& units) {
-  if (!obj.is_object()) return std::nullopt;
-  for (const std::string& stem : stems)
-    for (const auto& [suffix, factor] : units)
-      if (obj.contains(stem + suffix))
-        if (auto x = number_of(obj[stem + suffix])) return *x * factor;
-  for (const auto& [key, value] : obj.items())
-    if (value.is_object())
-      if (auto x = find_quantity(value, stems, units)) return x;
-  return std::nullopt;
-}
-
-std::string find_text(const json& obj, const std::vector<std::string>& keys) {
-  if (!obj.is_object()) return {};
-  for (const std::string& k : keys)
-    if (obj.contains(k) && obj[k].is_string()) return obj[k].get<std::string>();
-  return {};
 }
 
 // Mean raw forces over the last half of the tool travel: the fallback when the run ended before its
@@ -230,30 +198,25 @@ bool run_children(std::vector<ChildRun>& runs, int jobs, bool print_progress) {
 
 CaseResult read_case_result(const fs::path& dir, const fs::path& log_file, int exit_code) {
   CaseResult r;
-  json summary;
-  {
-    std::ifstream in(dir / "summary.json");
-    if (in) summary = json::parse(in, nullptr, false);
+  std::optional<RunSummary> summary;
+  try {
+    summary = read_summary(dir / "summary.json");
+  } catch (const std::exception&) {
   }
-  if (!summary.is_object()) {
+  if (!summary) {
     r.status = exit_code == -1 ? "not run" : "failed";
     r.message = exit_code == -1 ? "interrupted before it started"
                                 : fmt::format("{}, no summary.json: {}", exit_text(exit_code), last_lines(log_file, 2));
     return r;
   }
-  r.status = find_text(summary, {"status"});
+  const RunSummary& s = *summary;
+  r.status = s.status;
   if (r.status.empty()) r.status = exit_code == 0 ? "complete" : "failed";
-  for (const char* k : {"message", "error", "failure"})
-    if (summary.contains(k) && summary[k].is_string()) r.message = summary[k].get<std::string>();
-  if (summary.contains("messages") && summary["messages"].is_array())
-    for (const json& m : summary["messages"])
-      if (m.is_string()) r.message += (r.message.empty() ? "" : "; ") + m.get<std::string>();
+  r.message = s.message;
   if (r.status != "complete" && r.message.empty()) r.message = last_lines(log_file, 2);
 
-  r.cutting_force_N_per_mm = summary.contains("mean_cutting_force_N_per_mm")
-                                 ? number_of(summary["mean_cutting_force_N_per_mm"]) : std::nullopt;
-  r.thrust_force_N_per_mm = summary.contains("mean_thrust_force_N_per_mm")
-                                ? number_of(summary["mean_thrust_force_N_per_mm"]) : std::nullopt;
+  r.cutting_force_N_per_mm = s.mean_cutting_force_N_per_mm;
+  r.thrust_force_N_per_mm = s.mean_thrust_force_N_per_mm;
   if (r.cutting_force_N_per_mm && r.thrust_force_N_per_mm) {
     r.force_basis = "steady window";
   } else if (double fc = 0, ft = 0; last_half_means(dir / "forces.csv", fc, ft)) {
@@ -261,43 +224,29 @@ CaseResult read_case_result(const fs::path& dir, const fs::path& log_file, int e
     r.thrust_force_N_per_mm = ft;
     r.force_basis = "last half of the cut (no steady window)";
   }
-  if (summary.contains("max_temperature_K")) r.max_temperature_K = number_of(summary["max_temperature_K"]);
-  if (summary.contains("wall_time_s")) r.wall_time_s = number_of(summary["wall_time_s"]);
-  if (summary.contains("cell_size_m"))
-    if (auto h = number_of(summary["cell_size_m"])) r.cell_size_um = *h * 1e6;
-  if (summary.contains("mass_scaling") && summary["mass_scaling"].contains("factor"))
-    r.mass_scaling_factor = number_of(summary["mass_scaling"]["factor"]);
+  const auto finite = [](double x) { return std::isfinite(x) ? std::optional<double>(x) : std::nullopt; };
+  r.max_temperature_K = finite(s.max_temperature_K);
+  r.wall_time_s = finite(s.wall_time_s);
+  if (s.cell_size_m > 0.0) r.cell_size_um = s.cell_size_m * 1e6;
+  r.mass_scaling_factor = mass_scaling_factor(s);
   // The tool's work and where it went (energy_J_per_m; the tool is the only rigid body of a cut).
-  if (summary.contains("energy_J_per_m") && summary["energy_J_per_m"].is_object()) {
-    const json& e = summary["energy_J_per_m"];
-    const auto get = [&](const char* k) { return e.contains(k) ? number_of(e[k]) : std::nullopt; };
-    r.tool_work_J_per_m = get("external_work");
-    r.plastic_work_J_per_m = get("plastic_work");
-    r.damage_J_per_m = get("damage_dissipation");
-    r.friction_J_per_m = get("friction_work");
-    const auto kinetic = get("kinetic"), elastic = get("elastic"), viscous = get("viscous_dissipation");
-    if (kinetic && elastic) r.kinetic_elastic_J_per_m = *kinetic + *elastic;
-    if (r.tool_work_J_per_m && r.plastic_work_J_per_m && r.damage_J_per_m && r.friction_J_per_m && r.kinetic_elastic_J_per_m)
-      r.numerical_J_per_m = *r.tool_work_J_per_m - *r.plastic_work_J_per_m - *r.damage_J_per_m - *r.friction_J_per_m -
-                              *r.kinetic_elastic_J_per_m - viscous.value_or(0.0);
-  }
+  const EnergySummary& e = s.energy_J_per_m;
+  r.tool_work_J_per_m = e.external_work;
+  r.plastic_work_J_per_m = e.plastic_work;
+  r.damage_J_per_m = e.damage_dissipation;
+  r.friction_J_per_m = e.friction_work;
+  r.kinetic_elastic_J_per_m = e.kinetic + e.elastic;
+  r.numerical_J_per_m = e.external_work - e.plastic_work - e.damage_dissipation - e.friction_work -
+                        (e.kinetic + e.elastic) - e.viscous_dissipation;
 
-  if (summary.contains("temperature") && summary["temperature"].is_object()) {
-    const json& t = summary["temperature"];
-    if (t.contains("primary_shear_zone")) r.shear_zone_max_K = find_quantity(t["primary_shear_zone"], {"max"}, {{"_K", 1.0}});
-    if (t.contains("tool_chip_interface")) r.tool_chip_max_K = find_quantity(t["tool_chip_interface"], {"max"}, {{"_K", 1.0}});
-  }
-  if (summary.contains("chip") && summary["chip"].is_object()) {
-    const json& chip = summary["chip"];
-    r.chip_classification = find_text(chip, {"classification", "chip_type", "type", "morphology", "class"});
-    r.segmentation_degree = find_quantity(chip, {"segmentation_degree", "degree_of_segmentation", "mean_segmentation_degree"},
-                                          {{"", 1.0}, {"_1", 1.0}});
-    r.pitch_um = find_quantity(chip, {"pitch", "segment_pitch", "mean_pitch", "segmentation_pitch"},
-                               {{"_um", 1.0}, {"_m", 1e6}, {"_mm", 1e3}});
-    r.frequency_kHz = find_quantity(chip, {"segmentation_frequency", "frequency", "segment_frequency"},
-                                    {{"_kHz", 1.0}, {"_Hz", 1e-3}, {"_MHz", 1e3}});
-    r.chip_thickness_ratio = find_quantity(chip, {"chip_thickness_ratio"}, {{"", 1.0}});
-  }
+  const ChipHeadline chip = chip_headline(s);
+  r.shear_zone_max_K = chip.shear_zone_max_K;
+  r.tool_chip_max_K = chip.tool_chip_max_K;
+  r.chip_classification = chip.classification;
+  r.segmentation_degree = chip.segmentation_degree;
+  if (chip.pitch_m) r.pitch_um = *chip.pitch_m * 1e6;
+  if (chip.segmentation_frequency_Hz) r.frequency_kHz = *chip.segmentation_frequency_Hz * 1e-3;
+  r.chip_thickness_ratio = chip.chip_thickness_ratio;
   return r;
 }
 

@@ -23,10 +23,6 @@ KNOWN = {
     ("src/core/simulation.cpp", "contact"),
     ("src/core/simulation.hpp", "physics"),
     ("src/core/run_estimate.cpp", "io"),
-    ("src/cutting/chip_observer.cpp", "analysis"),
-    ("src/io/scene_observers.cpp", "cutting"),
-    ("src/io/cutting_input.hpp", "cutting"),
-    ("src/io/scene_parser.cpp", "cutting"),
 }
 
 

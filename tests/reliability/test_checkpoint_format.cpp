@@ -9,11 +9,11 @@
 #include <fstream>
 #include <sstream>
 
-#include "app/run_case.hpp"
+#include "run/run_case.hpp"
 #include "core/simulation.hpp"
 #include "io/checkpoint.hpp"
 #include "io/input_error.hpp"
-#include "io/scene_parser.hpp"
+#include "run/case_loading.hpp"
 
 namespace mpmcut {
 namespace {

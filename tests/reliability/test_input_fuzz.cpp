@@ -13,8 +13,8 @@
 #include <sstream>
 
 #include "cli.hpp"
-#include "io/cutting_input.hpp"
-#include "io/scene_parser.hpp"
+#include "cutting/cutting_input.hpp"
+#include "run/case_loading.hpp"
 #include "io/scene_writer.hpp"
 
 namespace mpmcut::testing {

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "io/input_error.hpp"
-#include "io/scene_parser.hpp"
+#include "run/case_loading.hpp"
 
 namespace mpmcut::testing {
 

@@ -9,7 +9,7 @@
 #include "core/run_estimate.hpp"
 #include "../support/parse_errors.hpp"
 #include "io/input_error.hpp"
-#include "io/scene_parser.hpp"
+#include "run/case_loading.hpp"
 
 namespace mpmcut {
 namespace {

@@ -8,7 +8,7 @@
 #include "../support/ti64_parameters.hpp"
 #include "cutting/mass_scaling.hpp"
 #include "io/input_error.hpp"
-#include "io/scene_parser.hpp"
+#include "run/case_loading.hpp"
 
 using namespace mpmcut;
 

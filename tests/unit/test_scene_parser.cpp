@@ -14,7 +14,7 @@
 
 #include "io/input_error.hpp"
 #include "io/material_library.hpp"
-#include "io/scene_parser.hpp"
+#include "run/case_loading.hpp"
 #include "io/scene_writer.hpp"
 
 namespace mpmcut {

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "io/scene_parser.hpp"
+#include "run/case_loading.hpp"
 #include "studies/measured_conditions.hpp"
 #include "studies/validation_metrics.hpp"
 

@@ -9,7 +9,7 @@
 #include <cstdio>
 
 #include "core/simulation.hpp"
-#include "io/scene_parser.hpp"
+#include "run/case_loading.hpp"
 
 namespace mpmcut {
 namespace {

@@ -1,6 +1,6 @@
-#include "io/scene_observers.hpp"
+#include "run/scene_observers.hpp"
 
-#include "cutting/chip_observer.hpp"
+#include "run/chip_observer.hpp"
 #include "cutting/cutting_forces.hpp"
 
 namespace mpmcut {

@@ -1,4 +1,4 @@
-#include "io/cutting_input.hpp"
+#include "cutting/cutting_input.hpp"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "app/mass_scaling_report.hpp"
+#include "run/mass_scaling_report.hpp"
 
 #include <algorithm>
 #include <cmath>

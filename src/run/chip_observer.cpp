@@ -1,4 +1,4 @@
-#include "cutting/chip_observer.hpp"
+#include "run/chip_observer.hpp"
 
 #include <exception>
 

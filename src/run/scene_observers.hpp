@@ -1,5 +1,6 @@
 #pragma once
-// The observers a scene asks for beyond the generic outputs (e.g. the cutting forces).
+// The observers a scene asks for beyond the generic outputs: for a cutting scene, the cutting
+// forces (cutting/cutting_forces.hpp) and the chip analysis of the final state (run/chip_observer.hpp).
 #include <filesystem>
 #include <memory>
 #include <vector>

@@ -1,0 +1,74 @@
+#include "cutting/cutting_case.hpp"
+
+#include <stdexcept>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "cutting/cutting_input.hpp"
+#include "cutting/cutting_scene.hpp"
+#include "io/material_library.hpp"
+#include "io/scene_parser.hpp"
+
+namespace mpmcut {
+
+namespace {
+
+// The workpiece material of a [cutting] case: a [[material]] of the file, else a library set.
+MaterialParameters cutting_material(TableReader& top, TableReader& cutting, const CuttingParameters& params) {
+  const std::string& name = params.material;
+  const MaterialLibrary& library = builtin_material_library();
+  std::optional<MaterialParameters> found;
+  for (TableReader& t : top.array_of_tables("material")) {
+    MaterialParameters m = read_material(t, library);
+    if (m.name == name) found = m;
+  }
+  const MaterialParameters* m = found ? &*found : library.find(name);
+  if (m != nullptr) {
+    // The workpiece starts solid: at or above the melting point the flow stress is zero.
+    cutting.check("initial_temperature", params.initial_temperature, temperature_range(*m));
+    return *m;
+  }
+  std::string known;
+  for (const auto& n : library.names()) known += (known.empty() ? "" : ", ") + ("\"" + n + "\"");
+  cutting.fail("material", fmt::format("no [[material]] and no library set named \"{}\"; library sets: {}", name, known));
+}
+
+}  // namespace
+
+Scene read_cutting_case(TableReader& top) {
+  for (const char* key : {"grid", "body", "rigid_body", "boundaries", "thermal", "body_force", "cutting_process"})
+    if (top.has(key))
+      top.fail(key, "not allowed in a [cutting] case, which builds its own grid, bodies, tool and boundaries; "
+                    "to edit those, run the case once and edit the expanded scene.toml in its result directory");
+  TableReader cutting = top.table("cutting");
+  const CuttingParameters params = read_cutting_parameters(cutting);
+  const MaterialParameters material = cutting_material(top, cutting, params);
+  Scene scene;
+  try {
+    scene = build_cutting_scene(params, material);
+  } catch (const std::invalid_argument& e) {
+    cutting.fail_table(e.what());
+  }
+  scene.title = top.string("title", scene.title);
+  if (auto t = top.optional_table("solver")) scene.solver = read_solver(*t, scene.solver);
+  scene.output = read_output(top.optional_table("output"), scene.output);
+  return scene;
+}
+
+void read_cutting_process(TableReader& top, Scene& scene) {
+  // An expanded cutting scene remembers its process, so that its force outputs are written.
+  if (auto t = top.optional_table("cutting_process")) {
+    scene.cutting = read_cutting_parameters(*t);
+    if (scene.rigid_bodies.empty()) t->fail_table("[cutting_process] needs the tool as the first [[rigid_body]]");
+  }
+}
+
+void write_cutting_process(const Scene& scene, std::ostream& out) {
+  if (!scene.cutting) return;
+  out << "\n# The process this scene was built from (the tool is the first rigid body); it makes the run\n"
+         "# write forces.csv and the cutting results. Edit the scene above, not this record.";
+  write_cutting_parameters(*scene.cutting, out, "cutting_process");
+}
+
+}  // namespace mpmcut

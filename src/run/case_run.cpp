@@ -1,0 +1,287 @@
+#include "run/case_run.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <iostream>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "run/case_loading.hpp"
+#include "run/mass_scaling_report.hpp"
+
+namespace mpmcut {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// fsync of a file or folder by path: the data reaches the disk, not only the page cache.
+void sync_path(const fs::path& p, bool folder = false) {
+  const int fd = ::open(p.c_str(), O_RDONLY | O_CLOEXEC | (folder ? O_DIRECTORY : 0));
+  if (fd < 0) return;  // not there (e.g. no snapshots): nothing to make durable
+  ::fsync(fd);
+  ::close(fd);
+}
+
+}  // namespace
+
+CaseRun::CaseRun(const Scene& scene, fs::path root, const RunOptions& options, int threads)
+    : root_(std::move(root)),
+      options_(options),
+      threads_(threads),
+      stop_(options.stop ? options.stop : &own_stop_),
+      sim_(scene),
+      scene_hash_(scene_hash(scene)),
+      store_(root_) {
+  if (options.tune_threads && threads > 1) tuner_.emplace(threads);
+}
+
+void CaseRun::start() {
+  out_.emplace(root_, sim_, false);
+  out_->history_row();
+  out_->rigid_row();
+  out_->snapshot();
+  const OutputSpec& o = sim_.scene().output;
+  next_snapshot_ = o.snapshot_interval > 0 ? o.snapshot_interval : sim_.scene().solver.end_time;
+  next_history_ = o.history_interval > 0 ? o.history_interval : 0.0;
+}
+
+void CaseRun::resume(Checkpoint&& c, const fs::path& file) {
+  cut_back_outputs(c.loop);
+  const RunLoopState loop = c.loop;
+  const long step = c.step;
+  std::move(c).restore(sim_);
+  out_.emplace(root_, sim_, true);
+  out_->restore(loop);
+  next_snapshot_ = loop.next_snapshot_s;
+  next_history_ = loop.next_history_s;
+  wall_before_s_ = loop.wall_time_s;
+  resumed_from_ = file.filename().string();
+  last_checkpoint_step_ = step;
+  last_checkpoint_ = file.filename().string();
+  synced_snapshots_ = loop.snapshot_count;
+  store_.set_previous(file);
+}
+
+bool CaseRun::finished() const {
+  const SolverSpec& s = sim_.scene().solver;
+  return sim_.time() >= s.end_time - 1e-12 * s.end_time || (s.max_steps > 0 && sim_.step_count() >= s.max_steps);
+}
+
+bool CaseRun::checkpoint_due() const {
+  switch (options_.checkpoint_every.kind) {
+    case CheckpointInterval::Kind::Off: return false;
+    case CheckpointInterval::Kind::Steps:
+      return sim_.step_count() % static_cast<long>(options_.checkpoint_every.value) == 0;
+    case CheckpointInterval::Kind::WallSeconds:
+      return std::chrono::duration<double>(Clock::now() - last_checkpoint_wall_).count() >=
+             options_.checkpoint_every.value;
+  }
+  return false;
+}
+
+void CaseRun::begin() {
+  if (progress_) return;
+  progress_.emplace(sim_.scene().solver.end_time, std::cerr,
+                    options_.progress ? std::nullopt : std::optional<bool>(false));
+  std::cerr << console_line(mass_scaling_report(sim_));
+}
+
+bool CaseRun::advance() {
+  begin();
+  if (ended_ || finished()) return false;
+  if (stop_->stop_requested()) return stopped();  // asked between steps
+  const Scene& scene = sim_.scene();
+  try {
+    RunOutputs& out = *out_;
+    const double end = scene.solver.end_time;
+    const double snap_dt = scene.output.snapshot_interval;
+    const double hist_dt = scene.output.history_interval;
+    const double eps = 1e-12 * end;
+    try {
+      // Land exactly on the next output time (and on the end time).
+      double target = std::min(next_snapshot_, end);
+      if (hist_dt > 0) target = std::min(target, next_history_);
+      if (tuner_) tuner_->before_step();
+      sim_.step(target - sim_.time());
+      if (tuner_) tuner_->after_step();
+      out.after_step();
+      if (hist_dt <= 0 || sim_.time() >= next_history_ - eps) {
+        out.history_row();
+        out.rigid_row();
+        while (hist_dt > 0 && next_history_ <= sim_.time() + eps) next_history_ += hist_dt;
+      }
+      if (sim_.time() >= next_snapshot_ - eps) {
+        out.snapshot();
+        while (next_snapshot_ <= sim_.time() + eps) next_snapshot_ += snap_dt > 0 ? snap_dt : end;
+      }
+      if (options_.progress) progress_->update(sim_.time(), sim_.step_count(), sim_.last_dt());
+      if (stop_->stop_requested()) return stopped();
+      if (checkpoint_due()) write_checkpoint();
+    } catch (const SimulationError& e) {
+      status_ = run_status::failed;
+      message_ = e.what();
+      exit_code_ = kExitSimulationFailed;
+      ended_ = true;
+      // The state at failure is the most useful picture for finding the cause.
+      try {
+        out.snapshot();
+      } catch (...) {
+      }
+      out.flush();
+      return false;
+    }
+  } catch (const std::exception& e) {  // output errors: disk full, unwritable directory, file too large
+    output_failed(e);
+    return false;
+  }
+  return !finished();
+}
+
+bool CaseRun::stopped() {
+  status_ = run_status::interrupted;
+  message_ = fmt::format("interrupted by a signal at step {}, time {:.6g} s; continue with: mpmcut resume {}",
+                         sim_.step_count(), sim_.time(), root_.string());
+  exit_code_ = kExitInterrupted;
+  ended_ = true;
+  return false;
+}
+
+void CaseRun::output_failed(const std::exception& e) {
+  status_ = run_status::failed;
+  message_ = std::string("output error: ") + e.what();
+  if (!last_checkpoint_.empty())
+    message_ += fmt::format("; the last checkpoint ({}) is intact: fix the cause, then mpmcut resume {}",
+                            last_checkpoint_, root_.string());
+  exit_code_ = kExitOutputError;
+  ended_ = true;
+}
+
+int CaseRun::finish() {
+  begin();
+  if (exit_code_ == kExitComplete || exit_code_ == kExitInterrupted) {
+    try {
+      // Before the extra snapshot below, which a resumed run does not have (it is dropped on resume).
+      if (exit_code_ == kExitInterrupted && last_checkpoint_step_ != sim_.step_count()) write_checkpoint();
+      if (out_->last_snapshot_time() < sim_.time()) out_->snapshot();
+      out_->flush();
+    } catch (const std::exception& e) {
+      output_failed(e);
+    }
+  }
+  ended_ = true;
+  if (options_.progress) progress_->finish(status_);
+  const double wall_s = wall_before_s_ + session_wall_s();
+  try {
+    nlohmann::json sections = to_json(summarize(sim_, status_, wall_s, message_, threads_));
+    if (tuner_) sections["thread_tuning"] = {{"threads_in_use_at_end", tuner_->chosen()}, {"trials", tuner_->trials()}};
+    if (!last_checkpoint_.empty()) sections["last_checkpoint"] = "checkpoints/" + last_checkpoint_;
+    if (!resumed_from_.empty()) sections["resumed_from"] = "checkpoints/" + resumed_from_;
+    if (out_) out_->finish(sections);
+    // Through the struct, so that what is written is what the readers read.
+    write_summary(root_ / "summary.json", summary_from_json(sections));
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    if (!message_.empty()) std::cerr << "error: " << message_ << "\n";
+    return kExitOutputError;
+  }
+  if (!message_.empty()) std::cerr << (exit_code_ == kExitInterrupted ? "" : "error: ") << message_ << "\n";
+  std::cerr << fmt::format(
+      "{}: {} particles, {} steps, {:.3g} s simulated in {:.1f} s wall ({:.3g} particle-steps/s); results in {}\n",
+      status_, sim_.particles().size(), sim_.step_count(), sim_.time(), wall_s,
+      wall_s > 0 ? sim_.particles().size() * static_cast<double>(sim_.step_count()) / wall_s : 0.0, root_.string());
+  return exit_code_;
+}
+
+int CaseRun::run_to_end() {
+  // From here a stop request stops the loop after a step, with a checkpoint.
+  const StopToken::LoopScope stops(*stop_);
+  while (advance()) {
+  }
+  return finish();
+}
+
+RunSummary CaseRun::summary() const {
+  RunSummary s = summarize(sim_, ended_ ? status_ : run_status::running, wall_before_s_ + session_wall_s(), message_,
+                           threads_);
+  if (!last_checkpoint_.empty()) s.last_checkpoint = "checkpoints/" + last_checkpoint_;
+  if (!resumed_from_.empty()) s.resumed_from = "checkpoints/" + resumed_from_;
+  return s;
+}
+
+// The CSV files in the result directory and their byte lengths.
+std::vector<FileLength> CaseRun::csv_lengths() const {
+  std::vector<FileLength> files;
+  for (const fs::directory_entry& e : fs::directory_iterator(root_)) {
+    if (e.is_regular_file() && e.path().extension() == ".csv")
+      files.push_back({e.path().filename().string(), static_cast<std::uint64_t>(e.file_size())});
+  }
+  std::sort(files.begin(), files.end(), [](const auto& a, const auto& b) { return a.relative_path < b.relative_path; });
+  return files;
+}
+
+// Everything the outputs have written so far goes to disk first, so that a checkpoint never
+// refers to data that a power cut could lose; then the checkpoint itself (atomically).
+fs::path CaseRun::write_checkpoint() {
+  out_->flush();
+  RunLoopState s;
+  s.next_snapshot_s = next_snapshot_;
+  s.next_history_s = next_history_;
+  out_->save(s);
+  s.files = csv_lengths();
+  s.wall_time_s = wall_before_s_ + session_wall_s();
+  s.threads = threads_;
+  s.checkpoint_kind = static_cast<int>(options_.checkpoint_every.kind);
+  s.checkpoint_value = options_.checkpoint_every.value;
+  s.case_file = sim_.scene().source_file;
+  s.mpmcut_version = MPMCUT_VERSION;
+  for (const FileLength& f : s.files) sync_path(root_ / f.relative_path);
+  for (int k = synced_snapshots_; k < s.snapshot_count; ++k) sync_path(root_ / snapshot_name(k));
+  sync_path(root_ / "particles.pvd");
+  sync_path(root_ / "snapshots", true);
+  sync_path(root_, true);
+  const fs::path file = store_.write(sim_, scene_hash_, s);
+  synced_snapshots_ = s.snapshot_count;
+  last_checkpoint_step_ = sim_.step_count();
+  last_checkpoint_ = file.filename().string();
+  last_checkpoint_wall_ = Clock::now();
+  return file;
+}
+
+// Makes the result directory look exactly as it did when the checkpoint was written.
+void CaseRun::cut_back_outputs(const RunLoopState& loop) const {
+  // CSV rows after the checkpoint go; a CSV that did not exist then goes too.
+  for (const FileLength& f : loop.files) {
+    const fs::path p = root_ / f.relative_path;
+    std::error_code ec;
+    const std::uintmax_t size = fs::file_size(p, ec);
+    if (ec) throw CheckpointError(fmt::format("'{}' existed at the checkpoint but cannot be read now: {}", p.string(),
+                                              ec.message()));
+    if (size < f.bytes) {
+      throw CheckpointError(fmt::format("'{}' has {} bytes, fewer than the {} it had at the checkpoint: the result "
+                                        "directory was changed after the run stopped",
+                                        p.string(), size, f.bytes));
+    }
+    if (size > f.bytes) fs::resize_file(p, f.bytes);
+  }
+  for (const FileLength& f : csv_lengths()) {
+    const bool known = std::any_of(loop.files.begin(), loop.files.end(),
+                                   [&](const FileLength& g) { return g.relative_path == f.relative_path; });
+    if (!known) fs::remove(root_ / f.relative_path);
+  }
+  // Snapshots written after the checkpoint, and temporaries a killed process left behind.
+  for (const fs::path& folder : {root_, root_ / "snapshots", root_ / "checkpoints"}) {
+    std::error_code ec;
+    for (const fs::directory_entry& e : fs::directory_iterator(folder, ec)) {
+      const std::string name = e.path().filename().string();
+      const bool stale_snapshot = folder == root_ / "snapshots" && snapshot_index(name) >= loop.snapshot_count;
+      const bool temporary = name.find(".tmp-") != std::string::npos || name == "checkpoint.tmp" || name == "latest.tmp";
+      if (e.is_regular_file() && (stale_snapshot || temporary)) fs::remove(e.path());
+    }
+  }
+}
+
+}  // namespace mpmcut

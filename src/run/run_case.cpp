@@ -1,0 +1,205 @@
+#include "run/run_case.hpp"
+
+#include <omp.h>
+
+#include <csignal>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <optional>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "core/run_estimate.hpp"
+#include "io/atomic_file.hpp"
+#include "io/checkpoint.hpp"
+#include "io/input_error.hpp"
+#include "io/result_directory.hpp"
+#include "run/case_loading.hpp"
+#include "run/case_run.hpp"
+#include "run/run_summary.hpp"
+
+namespace mpmcut {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// SIGXFSZ is ignored during a run so that a file-size limit surfaces as an EFBIG write error with a
+// message instead of killing the process. (SIGINT/SIGTERM are the caller's: options.stop.)
+struct IgnoreFileSizeSignal {
+  struct sigaction old_xfsz {};
+  IgnoreFileSizeSignal() {
+    struct sigaction ignore {};
+    ignore.sa_handler = SIG_IGN;
+    sigemptyset(&ignore.sa_mask);
+    sigaction(SIGXFSZ, &ignore, &old_xfsz);
+  }
+  ~IgnoreFileSizeSignal() { sigaction(SIGXFSZ, &old_xfsz, nullptr); }
+};
+
+// Writes the expanded scene; a failure is an output error.
+void write_expanded_scene(const Scene& scene, const fs::path& root) {
+  write_file_atomically(root / "scene.toml", [&](std::ostream& out) { write_scene(scene, out); });
+}
+
+}  // namespace
+
+int set_threads(int requested) {
+  const int threads = requested > 0 ? requested : omp_get_max_threads();  // OMP_NUM_THREADS or all cores
+  omp_set_num_threads(threads);
+  return threads;
+}
+
+// ---------------------------------------------------------------------------------------------
+
+std::unique_ptr<CaseRun> open_run(const Scene& scene, const RunOptions& options) {
+  // Before the result directory and the first large allocation: a run that cannot fit in memory
+  // or cannot finish is the user's input error, not a crash or a hang later.
+  try {
+    check_run_fits(scene);
+  } catch (const InputError& e) {
+    throw RunOpenError(e.what(), kExitInputError);
+  }
+  const int threads = set_threads(options.threads);
+  fs::path root;
+  try {
+    root = ResultDirectory::open(options.out_dir, options.force).root();
+    write_expanded_scene(scene, root);
+  } catch (const std::exception& e) {
+    throw RunOpenError(e.what(), kExitOutputError);
+  }
+  std::unique_ptr<CaseRun> run;
+  try {
+    run = std::make_unique<CaseRun>(scene, root, options, threads);
+    write_summary(root / "summary.json", summarize(run->simulation(), run_status::running, 0.0, "", threads));
+    run->start();
+  } catch (const std::invalid_argument& e) {  // a scene the solver cannot build
+    throw RunOpenError(e.what(), kExitInputError);
+  } catch (const std::exception& e) {
+    throw RunOpenError(std::string("output error: ") + e.what(), kExitOutputError);
+  }
+  return run;
+}
+
+int run_case(const Scene& scene, const RunOptions& options) {
+  IgnoreFileSizeSignal file_size_signal;
+  std::unique_ptr<CaseRun> run;
+  try {
+    run = open_run(scene, options);
+  } catch (const RunOpenError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return e.exit_code;
+  }
+  return run->run_to_end();
+}
+
+ExistingRun existing_run(const fs::path& dir, const Scene& scene) {
+  std::error_code ec;
+  if (!fs::exists(dir / "scene.toml", ec) || !fs::exists(dir / "summary.json", ec)) return ExistingRun::None;
+  std::ostringstream expected;
+  write_scene(scene, expected);
+  std::ifstream in(dir / "scene.toml", std::ios::binary);
+  const std::string found((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (found != expected.str()) return ExistingRun::None;
+  std::string status;
+  try {
+    status = read_summary(dir / "summary.json").status;
+  } catch (const std::exception&) {
+    return ExistingRun::None;
+  }
+  if (status == run_status::complete) return ExistingRun::Complete;
+  return fs::exists(dir / "checkpoints" / "latest", ec) ? ExistingRun::Resumable : ExistingRun::None;
+}
+
+std::unique_ptr<CaseRun> open_resumed_run(const RunOptions& options) {
+  const fs::path root = options.out_dir;
+  const auto refuse = [&](const std::string& why) {
+    return RunOpenError("cannot resume '" + root.string() + "': " + why, kExitInputError);
+  };
+  std::error_code ec;
+  if (!fs::is_directory(root, ec)) throw refuse("no such result directory");
+  if (!fs::exists(root / "summary.json") || !fs::exists(root / "scene.toml"))
+    throw refuse("it has no summary.json and scene.toml, so it is not an mpmcut result directory");
+  std::string status;
+  try {
+    status = read_summary(root / "summary.json").status;
+  } catch (const std::exception& e) {
+    throw refuse(e.what());
+  }
+  if (status == run_status::complete && !options.force) {
+    throw refuse(
+        "its run is complete (summary.json status \"complete\"); there is nothing to resume. Use --force to "
+        "recompute from its last checkpoint to the end");
+  }
+  if (status == run_status::failed)
+    std::cerr << "note: the run had failed (see summary.json \"message\"); continuing from its last checkpoint\n";
+
+  Scene scene;
+  try {
+    scene = load_scene(root / "scene.toml");
+  } catch (const InputError& e) {
+    throw refuse(e.what());
+  }
+  CheckpointStore store(root);
+  std::optional<CheckpointStore::Loaded> loaded;
+  try {
+    loaded = store.load_newest_valid();
+  } catch (const CheckpointError& e) {
+    throw refuse(e.what());
+  }
+  for (const std::string& r : loaded->rejected) std::cerr << "warning: " << r << "\n";
+  if (!loaded->rejected.empty())
+    std::cerr << "warning: falling back to the previous valid checkpoint '" << loaded->file.string() << "'\n";
+  Checkpoint& c = loaded->checkpoint;
+  if (c.scene_hash != scene_hash(scene)) {
+    throw refuse(fmt::format("scene.toml differs from the scene that checkpoint '{}' was written with, so this "
+                              "would not continue the same run. Restore the original scene.toml or start a new run",
+                              loaded->file.string()));
+  }
+  scene.source_file = c.loop.case_file;
+  try {
+    check_run_fits(scene);  // the machine resuming may have less memory than the one that started
+  } catch (const InputError& e) {
+    throw refuse(e.what());
+  }
+  if (c.loop.mpmcut_version != MPMCUT_VERSION)
+    std::cerr << "warning: the checkpoint was written by mpmcut " << c.loop.mpmcut_version << ", this is "
+              << MPMCUT_VERSION << "; the continuation may differ from an uninterrupted run\n";
+  const int threads = set_threads(options.threads > 0 ? options.threads : c.loop.threads);
+  RunOptions resumed = options;
+  if (!options.checkpoint_every_given && c.loop.checkpoint_kind >= 0 && c.loop.checkpoint_kind <= 2)
+    resumed.checkpoint_every = {static_cast<CheckpointInterval::Kind>(c.loop.checkpoint_kind), c.loop.checkpoint_value};
+
+  std::unique_ptr<CaseRun> run;
+  try {
+    run = std::make_unique<CaseRun>(scene, root, resumed, threads);
+    run->resume(std::move(c), loaded->file);
+    write_summary(root / "summary.json", summarize(run->simulation(), run_status::running, 0.0, "", threads));
+  } catch (const CheckpointError& e) {
+    throw refuse(e.what());
+  } catch (const std::invalid_argument& e) {
+    throw refuse(e.what());
+  } catch (const std::exception& e) {
+    throw RunOpenError(std::string("output error: ") + e.what(), kExitOutputError);
+  }
+  std::cerr << fmt::format("resuming '{}' from {} (step {}, t = {:.6g} s)\n", root.string(),
+                           loaded->file.filename().string(), run->simulation().step_count(),
+                           run->simulation().time());
+  return run;
+}
+
+int resume_case(const RunOptions& options) {
+  IgnoreFileSizeSignal file_size_signal;
+  std::unique_ptr<CaseRun> run;
+  try {
+    run = open_resumed_run(options);
+  } catch (const RunOpenError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return e.exit_code;
+  }
+  return run->run_to_end();
+}
+
+}  // namespace mpmcut

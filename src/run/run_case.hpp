@@ -1,0 +1,47 @@
+#pragma once
+// A whole run as the command line does it (`mpmcut run`, `mpmcut resume`): the checks before
+// anything is written, the result directory, the run to its end (run/case_run.hpp) and the
+// messages on stderr; returns the exit code. Also what a result directory holds for a scene
+// (the studies' --keep-complete), and the continuation of a stopped run (docs/reliability.md).
+#include <filesystem>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "core/scene.hpp"
+#include "run/case_run.hpp"
+#include "run/run_options.hpp"
+
+namespace mpmcut {
+
+// Why a run could not be opened (nothing was stepped): the message for the user and the exit code.
+struct RunOpenError : std::runtime_error {
+  RunOpenError(const std::string& what, int code) : std::runtime_error(what), exit_code(code) {}
+  int exit_code;
+};
+
+// A new run in options.out_dir, ready to step: the memory and step check, the result directory,
+// scene.toml, a "running" summary.json and the outputs at t = 0. Throws RunOpenError.
+std::unique_ptr<CaseRun> open_run(const Scene& scene, const RunOptions& options);
+
+// The stopped run in options.out_dir, continued from its newest valid checkpoint (scene from its
+// scene.toml; warnings about skipped checkpoints go to stderr). Throws RunOpenError.
+std::unique_ptr<CaseRun> open_resumed_run(const RunOptions& options);
+
+// Runs `scene`; returns one of ExitCode. Messages go to stderr.
+int run_case(const Scene& scene, const RunOptions& options);
+
+// What a result directory holds for `scene` (studies rerun with `run --keep-complete`: a complete run
+// of the same scene is kept, an unfinished one with a checkpoint is resumed, anything else is rerun).
+// "The same scene" = its scene.toml is byte for byte what this scene writes.
+enum class ExistingRun { None, Complete, Resumable };
+ExistingRun existing_run(const std::filesystem::path& dir, const Scene& scene);
+
+// Continues the run in options.out_dir from its newest valid checkpoint (scene from its
+// scene.toml); returns one of ExitCode.
+int resume_case(const RunOptions& options);
+
+// The OpenMP threads of a run: `requested`, or all cores (OMP_NUM_THREADS) when 0; set for the process.
+int set_threads(int requested);
+
+}  // namespace mpmcut

@@ -1,0 +1,83 @@
+#pragma once
+// summary.json as a struct: the run writes it through to_json() and everything that reads a
+// result directory (sweep, validate, calibrate, Python) reads it through summary_from_json(), so
+// that a key has one spelling (docs/outputs.md, "summary.json"). The sections that observers add
+// (the cutting process, the chip analysis, the fracture accounting, ...) are carried as JSON in
+// `sections`; the headline values the studies compare have typed readers below.
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/tensor.hpp"
+#include "io/json_summary.hpp"
+
+namespace mpmcut {
+
+class Simulation;
+
+// The energy ledger at the end, J per m of thickness (docs/cutting.md, "Energy balance").
+struct EnergySummary {
+  double initial = 0.0, kinetic = 0.0, elastic = 0.0, plastic_work = 0.0, heat = 0.0, damage_dissipation = 0.0,
+         friction_work = 0.0, viscous_dissipation = 0.0, external_work = 0.0, transfer_dissipation = 0.0,
+         contact_safeguard = 0.0, removed_energy = 0.0;
+  bool operator==(const EnergySummary&) const = default;
+};
+
+struct RigidBodySummary {
+  std::string name;
+  Vec2 force_N_per_m = Vec2::Zero(), impulse_N_s_per_m = Vec2::Zero(), displacement_m = Vec2::Zero();
+  double work_J_per_m = 0.0;
+  bool operator==(const RigidBodySummary&) const = default;
+};
+
+struct RunSummary {
+  std::string status;  // run_status: running, complete, failed, interrupted
+  std::string message;  // why it failed or how to continue; empty: none
+  std::string mpmcut_version, title, case_file;
+  std::uint64_t particles = 0, grid_nodes = 0;
+  double cell_size_m = 0.0;
+  long steps = 0;
+  double simulated_time_s = 0.0, end_time_s = 0.0, wall_time_s = 0.0;
+  int threads = 0;
+  double particle_steps_per_s = 0.0;
+  EnergySummary energy_J_per_m;
+  double energy_residual_J_per_m = 0.0, energy_relative_residual = 0.0;
+  double max_temperature_K = 0.0;
+  std::vector<RigidBodySummary> rigid_bodies;
+  std::optional<std::uint64_t> removed_particles;
+  std::optional<double> removed_mass_kg_per_m;
+  std::string last_checkpoint, resumed_from;  // "checkpoints/<file>"; empty: none
+  // Mean tool forces over the steady window (cutting runs; none when the run ended before it).
+  std::optional<double> mean_cutting_force_N_per_mm, mean_thrust_force_N_per_mm;
+  // Everything else, by key: mass_scaling, cutting, chip, temperature, fracture, rake_face,
+  // steady_window, thread_tuning, ... (and keys a newer version wrote).
+  nlohmann::json sections = nlohmann::json::object();
+
+  bool is_cutting_run() const { return sections.contains("cutting"); }
+};
+
+// The part of the summary the run itself knows from the simulation state.
+RunSummary summarize(const Simulation& sim, const std::string& status, double wall_s, const std::string& message,
+                     int threads);
+
+nlohmann::json to_json(const RunSummary& s);
+// Throws std::runtime_error naming the key when a typed key has the wrong type.
+RunSummary summary_from_json(const nlohmann::json& j);
+
+void write_summary(const std::filesystem::path& file, const RunSummary& s);  // atomically
+RunSummary read_summary(const std::filesystem::path& file);  // throws std::runtime_error naming the path
+
+// Headline values of the observers' sections, for the studies' tables.
+struct ChipHeadline {
+  std::string classification;  // empty: no chip analysis
+  std::optional<double> segmentation_degree, pitch_m, segmentation_frequency_Hz, chip_thickness_ratio;
+  std::optional<double> shear_zone_max_K, tool_chip_max_K;  // "temperature" section
+};
+ChipHeadline chip_headline(const RunSummary& s);
+std::optional<double> mass_scaling_factor(const RunSummary& s);
+
+}  // namespace mpmcut

@@ -1,0 +1,43 @@
+#pragma once
+// A request to stop a run after its current step, owned by whoever drives the run: the command
+// line binds one to SIGINT/SIGTERM (app/stop_signal.hpp), Python asks through Run.stop(), a
+// test simply calls request_stop(). The run loop checks it after every step and then writes a
+// checkpoint and the outputs so far (summary status "interrupted").
+// Lock-free atomics only, so request_stop() may be called from a signal handler or another thread.
+#include <atomic>
+
+namespace mpmcut {
+
+class StopToken {
+ public:
+  // Records a request. Returns true when a run loop is running and this is the first request
+  // since it began, i.e. the loop will stop cleanly after this step; false otherwise (no loop, or
+  // the loop has already been asked), where a signal handler exits at once instead.
+  bool request_stop() noexcept {
+    const int n = requests_.fetch_add(1) + 1;
+    return running_.load() && n == 1;
+  }
+  bool stop_requested() const noexcept { return requests_.load() > 0; }
+
+  // The span of one run loop: requests made before it began are forgotten (the command line has
+  // already exited on them), and requests during it stop it cleanly.
+  class LoopScope {
+   public:
+    explicit LoopScope(StopToken& token) : token_(token) {
+      token_.requests_ = 0;
+      token_.running_ = true;
+    }
+    ~LoopScope() { token_.running_ = false; }
+    LoopScope(const LoopScope&) = delete;
+    LoopScope& operator=(const LoopScope&) = delete;
+
+   private:
+    StopToken& token_;
+  };
+
+ private:
+  std::atomic<int> requests_{0};
+  std::atomic<bool> running_{false};
+};
+
+}  // namespace mpmcut

@@ -1,0 +1,86 @@
+// summary.json through RunSummary (src/run/run_summary.hpp): what the run writes is what the studies
+// read, key for key; the observers' sections are carried whole; the headline readers find the values
+// the chip analysis and the cutting observer write.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "core/simulation.hpp"
+#include "run/case_loading.hpp"
+#include "run/run_summary.hpp"
+
+namespace mpmcut {
+namespace {
+
+Scene block() { return load_scene(std::string(MPMCUT_TEST_DIR) + "/support/cases/elastic_block.toml"); }
+
+TEST(RunSummary, WhatTheRunWritesReadsBackKeyForKey) {
+  Simulation sim(block());
+  for (int k = 0; k < 5; ++k) sim.step();
+  const RunSummary s = summarize(sim, run_status::complete, 2.0, "", 1);
+  EXPECT_EQ(s.steps, 5);
+  EXPECT_EQ(s.particles, sim.particles().size());
+  EXPECT_DOUBLE_EQ(s.particle_steps_per_s, s.particles * 5 / 2.0);
+  ASSERT_EQ(s.rigid_bodies.size(), 1u);
+  EXPECT_EQ(s.rigid_bodies[0].name, "wall");
+  EXPECT_EQ(s.rigid_bodies[0].displacement_m, sim.rigid_bodies()[0].displacement);
+  EXPECT_EQ(s.energy_J_per_m.kinetic, sim.energy().kinetic);
+
+  nlohmann::json j = to_json(s);
+  EXPECT_FALSE(j.contains("message"));  // only when there is one
+  EXPECT_FALSE(j.contains("mean_cutting_force_N_per_mm"));  // not a cutting run
+  // Sections an observer adds travel through the struct unchanged.
+  j["chip"] = {{"classification", "serrated"}, {"pitch_m", 4e-5}, {"segmentation_degree", 0.4}};
+  j["temperature"] = {{"primary_shear_zone", {{"max_K", 900.0}}}, {"tool_chip_interface", {{"max_K", nullptr}}}};
+  j["cutting"] = {{"material", "ti64"}};
+  j["mean_cutting_force_N_per_mm"] = 123.5;
+  j["mean_thrust_force_N_per_mm"] = nullptr;
+  const RunSummary back = summary_from_json(j);
+  EXPECT_EQ(to_json(back), j);
+  EXPECT_EQ(back.rigid_bodies, s.rigid_bodies);
+  EXPECT_EQ(back.energy_J_per_m, s.energy_J_per_m);
+  EXPECT_EQ(back.mean_cutting_force_N_per_mm, 123.5);
+  EXPECT_FALSE(back.mean_thrust_force_N_per_mm.has_value());
+
+  const ChipHeadline chip = chip_headline(back);
+  EXPECT_EQ(chip.classification, "serrated");
+  EXPECT_EQ(chip.pitch_m, 4e-5);
+  EXPECT_EQ(chip.segmentation_degree, 0.4);
+  EXPECT_EQ(chip.shear_zone_max_K, 900.0);
+  EXPECT_FALSE(chip.tool_chip_max_K.has_value());
+  EXPECT_FALSE(chip.chip_thickness_ratio.has_value());
+  EXPECT_EQ(mass_scaling_factor(back), 1.0);
+}
+
+TEST(RunSummary, FileRoundTripAndWrongTypesAreNamed) {
+  Simulation sim(block());
+  RunSummary s = summarize(sim, run_status::failed, 0.0, "it broke", 2);
+  s.last_checkpoint = "checkpoints/checkpoint_000001.bin";
+  const std::filesystem::path file = std::filesystem::temp_directory_path() / "mpmcut_test_run_summary.json";
+  write_summary(file, s);
+  const RunSummary back = read_summary(file);
+  EXPECT_EQ(back.status, "failed");
+  EXPECT_EQ(back.message, "it broke");
+  EXPECT_EQ(back.threads, 2);
+  EXPECT_EQ(back.last_checkpoint, s.last_checkpoint);
+  EXPECT_EQ(to_json(back), to_json(s));
+  std::filesystem::remove(file);
+
+  nlohmann::json j = to_json(s);
+  j["max_temperature_K"] = "hot";
+  EXPECT_THROW(
+      {
+        try {
+          summary_from_json(j);
+        } catch (const std::runtime_error& e) {
+          EXPECT_NE(std::string(e.what()).find("max_temperature_K"), std::string::npos) << e.what();
+          throw;
+        }
+      },
+      std::runtime_error);
+}
+
+}  // namespace
+}  // namespace mpmcut
