@@ -8,6 +8,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev libomp-dev
   libnlopt-dev openmpi-bin libopenmpi-dev
   python3-matplotlib python3-meshio python3-numpy
+  pybind11-dev python3-pytest
 )
 missing=()
 for p in "${packages[@]}"; do

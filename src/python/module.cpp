@@ -1,0 +1,220 @@
+// The Python module mpmcut's compiled part, mpmcut._mpmcut (docs/python.md): a case (Scene) and a
+// run (run/case_run.hpp) as Python objects. src/python/mpmcut/__init__.py adds the Python-side
+// conveniences (overrides from a dict). A thin layer: the run is the library's, step for step.
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <pybind11/functional.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include "io/input_error.hpp"
+#include "python/csv_columns.hpp"
+#include "python/particle_views.hpp"
+#include "run/case_loading.hpp"
+#include "run/case_run.hpp"
+#include "run/run_case.hpp"
+#include "run/run_summary.hpp"
+
+namespace py = pybind11;
+namespace fs = std::filesystem;
+
+namespace mpmcut::python {
+
+namespace {
+
+py::object json_to_python(const nlohmann::json& j) { return py::module_::import("json").attr("loads")(j.dump()); }
+
+RunOptions run_options(const fs::path& out, bool force, int threads, bool progress, const std::string& checkpoint_every) {
+  RunOptions o;
+  o.out_dir = out;
+  o.force = force;
+  o.threads = threads;
+  // A fixed thread count: the run then is the CLI's `--threads N --fixed-threads`, bit for bit.
+  o.tune_threads = false;
+  o.progress = progress;
+  o.checkpoint_every = parse_checkpoint_interval(checkpoint_every);
+  return o;
+}
+
+// A run driven from Python. The StopToken is the run's own: stop() and Ctrl-C request a clean stop.
+class PyRun {
+ public:
+  explicit PyRun(std::unique_ptr<CaseRun> run) : run_(std::move(run)) {}
+
+  static PyRun open(const Scene& scene, const fs::path& out, bool force, int threads, bool progress,
+                    const std::string& checkpoint_every) {
+    RunOptions o = run_options(out, force, threads, progress, checkpoint_every);
+    return PyRun(open_run(scene, o));
+  }
+  static PyRun resume(const fs::path& out, bool force, int threads, bool progress,
+                      const std::optional<std::string>& checkpoint_every) {
+    RunOptions o = run_options(out, force, threads, progress, checkpoint_every.value_or("off"));
+    o.checkpoint_every_given = checkpoint_every.has_value();
+    return PyRun(open_resumed_run(o));
+  }
+
+  // Up to n steps with the GIL released; returns whether the run can go on.
+  bool step(long n) {
+    views_.check_released();
+    bool more = !ended_;
+    for (long k = 0; k < n && more; ++k) {
+      {
+        py::gil_scoped_release release;
+        more = run_->advance();
+      }
+      if (PyErr_CheckSignals() != 0) interrupted_by_python();
+    }
+    if (!more) ended_ = true;
+    return more;
+  }
+
+  // To the end; `callback(run)` after every `every` steps (a False return stops the run cleanly).
+  std::string run(const std::optional<py::function>& callback, long every, py::handle self) {
+    {
+      long since = 0;
+      while (!ended_) {
+        views_.check_released();
+        bool more;
+        {
+          py::gil_scoped_release release;
+          more = run_->advance();
+        }
+        if (!more) ended_ = true;
+        if (PyErr_CheckSignals() != 0) interrupted_by_python();
+        if (callback && !ended_ && ++since >= every) {
+          since = 0;
+          const py::object keep_going = (*callback)(self);
+          if (!keep_going.is_none() && !keep_going.cast<bool>()) run_->stop_token().request_stop();
+        }
+      }
+      finish();
+    }
+    if (pending_interrupt_) {
+      pending_interrupt_ = false;
+      throw py::error_already_set();
+    }
+    return status();
+  }
+
+  std::string finish() {
+    if (!exit_code_) {
+      py::gil_scoped_release release;
+      ended_ = true;
+      exit_code_ = run_->finish();
+    }
+    return status();
+  }
+
+  std::string status() const {
+    if (!exit_code_) return run_status::running;
+    return read_summary(run_->root() / "summary.json").status;
+  }
+
+  void stop() { run_->stop_token().request_stop(); }
+  fs::path checkpoint() { return run_->write_checkpoint(); }
+  py::dict particles(py::handle self) { return views_.views(run_->simulation().particles(), self); }
+  py::dict csv(const char* name) {
+    run_->flush_outputs();
+    return read_csv_columns(run_->root() / name);
+  }
+  py::object summary() const {
+    if (exit_code_) return json_to_python(to_json(read_summary(run_->root() / "summary.json")));
+    return json_to_python(to_json(run_->summary()));
+  }
+  const CaseRun& run() const { return *run_; }
+  std::optional<int> exit_code() const { return exit_code_; }
+
+ private:
+  // Ctrl-C in Python: stop cleanly (checkpoint, outputs, summary), then raise KeyboardInterrupt.
+  void interrupted_by_python() {
+    PyObject *type, *value, *trace;
+    PyErr_Fetch(&type, &value, &trace);
+    run_->stop_token().request_stop();
+    ended_ = true;
+    finish();
+    PyErr_Restore(type, value, trace);
+    throw py::error_already_set();
+  }
+
+  std::unique_ptr<CaseRun> run_;
+  ParticleViews views_;
+  bool ended_ = false;
+  bool pending_interrupt_ = false;
+  std::optional<int> exit_code_;
+};
+
+}  // namespace
+
+PYBIND11_MODULE(_mpmcut, m) {
+  m.doc() = "mpmcut: material point method simulation of orthogonal metal cutting (docs/python.md)";
+  m.attr("__version__") = MPMCUT_VERSION;
+  py::register_exception<InputError>(m, "InputError", PyExc_ValueError);
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const RunOpenError& e) {
+      PyErr_SetString(PyExc_RuntimeError, e.what());
+    }
+  });
+  ParticleViews::bind(m);
+
+  py::class_<Scene>(m, "Case", "A validated case (scene): what is simulated. Build it with mpmcut.load_case().")
+      .def_static(
+          "_from_file", [](const fs::path& file, const std::vector<std::string>& overrides) {
+            return load_scene(file, overrides);
+          })
+      .def_static("_from_toml",
+                  [](const std::string& text, const std::string& name, const std::vector<std::string>& overrides) {
+                    return parse_scene(text, name, overrides);
+                  })
+      .def_static("_default_cut", [](const std::vector<std::string>& overrides) { return default_cutting_scene(overrides); })
+      .def_property_readonly("title", [](const Scene& s) { return s.title; })
+      .def_property_readonly("source", [](const Scene& s) { return s.source_file; })
+      .def_property_readonly("end_time_s", [](const Scene& s) { return s.solver.end_time; })
+      .def_property_readonly("is_cutting", [](const Scene& s) { return s.cutting.has_value(); })
+      .def("toml", &scene_text, "The expanded scene as TOML (what the run writes as scene.toml).");
+
+  py::class_<PyRun>(m, "Run", "A run writing into a result directory (docs/python.md).")
+      .def(py::init(&PyRun::open), py::arg("case"), py::arg("out"), py::kw_only(), py::arg("force") = false,
+           py::arg("threads") = 0, py::arg("progress") = false, py::arg("checkpoint_every") = "off",
+           "A new run of `case` into the result directory `out` (force: replace an existing one). threads: OpenMP "
+           "threads, 0 = all cores. checkpoint_every: as the CLI's --checkpoint-every (\"5000\", \"10min\", \"off\").")
+      .def_static("resume", &PyRun::resume, py::arg("out"), py::kw_only(), py::arg("force") = false,
+                  py::arg("threads") = 0, py::arg("progress") = false, py::arg("checkpoint_every") = py::none(),
+                  "The stopped run in `out`, continued from its newest valid checkpoint.")
+      .def("step", &PyRun::step, py::arg("n") = 1,
+           "Up to n steps (the GIL released). Returns True while the run can go on.")
+      .def(
+          "run",
+          [](py::object self, const std::optional<py::function>& callback, long every) {
+            return self.cast<PyRun&>().run(callback, every, self);
+          },
+          py::arg("callback") = py::none(), py::arg("every") = 1,
+          "To the end (the GIL released while stepping), then the final outputs; returns the status. "
+          "callback(run) is called after every `every` steps; returning False stops the run cleanly.")
+      .def("finish", &PyRun::finish, "Final outputs and summary.json; returns the status.")
+      .def("stop", &PyRun::stop, "Ask the run to stop after the current step (a checkpoint is written).")
+      .def("checkpoint", &PyRun::checkpoint, "Write a checkpoint now; returns its file.")
+      .def_property_readonly("particles", [](py::object self) { return self.cast<PyRun&>().particles(self); },
+                             "{field: read-only ndarray} views on the particle arrays; valid until the next step.")
+      .def("forces", [](PyRun& r) { return r.csv("forces.csv"); }, "forces.csv as {column: ndarray} (cutting runs).")
+      .def("history", [](PyRun& r) { return r.csv("history.csv"); }, "history.csv as {column: ndarray}.")
+      .def("rigid_forces", [](PyRun& r) { return r.csv("rigid_forces.csv"); }, "rigid_forces.csv as {column: ndarray}.")
+      .def("summary", &PyRun::summary, "summary.json as a dict (while running: the summary so far).")
+      .def_property_readonly("status", &PyRun::status)
+      .def_property_readonly("exit_code", &PyRun::exit_code, "The CLI's exit code once finished, else None.")
+      .def_property_readonly("time_s", [](const PyRun& r) { return r.run().simulation().time(); })
+      .def_property_readonly("step_count", [](const PyRun& r) { return r.run().simulation().step_count(); })
+      .def_property_readonly("finished", [](const PyRun& r) { return r.run().finished(); })
+      .def_property_readonly("out", [](const PyRun& r) { return r.run().root(); })
+      .def_property_readonly("particle_count", [](const PyRun& r) { return r.run().simulation().particles().size(); });
+
+  m.attr("particle_fields") = ParticleViews::names();
+}
+
+}  // namespace mpmcut::python

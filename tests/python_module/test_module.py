@@ -1,0 +1,123 @@
+"""The Python module mpmcut (docs/python.md): cases from files, TOML text and dict overrides; runs to the end
+and step by step; particle fields as zero-copy views; forces, history and summary; checkpoint and resume; and
+the same numbers as the command line, bit for bit."""
+import subprocess
+
+import numpy as np
+import pytest
+
+import mpmcut
+
+from conftest import SOURCE_DIR
+
+ELASTIC = (SOURCE_DIR / "tests" / "support" / "cases" / "elastic_block.toml").read_text()
+
+
+def test_overrides_from_a_dict_are_set_strings():
+    assert mpmcut.overrides_from({"solver.cfl": 0.3, "body[0].velocity": [1, 0.5], "solver.scheme": "usl",
+                                  "solver.remove_escaping_particles": True}) == [
+        "solver.cfl=0.3", "body[0].velocity=[1, 0.5]", 'solver.scheme="usl"',
+        "solver.remove_escaping_particles=true"]
+    assert mpmcut.overrides_from(["solver.cfl=0.2"]) == ["solver.cfl=0.2"]
+
+
+def test_cases_from_text_file_and_overrides(quick_case):
+    case = mpmcut.case_from_toml(ELASTIC, {"solver.end_time": 0.02})
+    assert case.title == "block" and case.end_time_s == 0.02 and not case.is_cutting
+    cut = mpmcut.load_case(quick_case, {"cutting.cut_length": 0.1e-3})
+    assert cut.is_cutting and "[cutting_process]" in cut.toml()
+    assert "cut_length = 0.0001" in cut.toml()
+    with pytest.raises(mpmcut.InputError, match="no_such_key"):
+        mpmcut.case_from_toml(ELASTIC, {"solver.no_such_key": 1})
+    with pytest.raises(ValueError):  # InputError is a ValueError
+        mpmcut.load_case(quick_case, {"cutting.cutting_speed": -1.0})
+
+
+def test_python_run_is_bit_identical_to_the_cli(tmp_path, binary, quick_case, short):
+    cli = tmp_path / "cli"
+    sets = [a for o in mpmcut.overrides_from(short) for a in ("--set", o)]
+    subprocess.run([binary, "run", str(quick_case), "--out", str(cli), "--threads", "1", "--fixed-threads",
+                    "--no-progress", "--no-plots", *sets], check=True, capture_output=True)
+    run = mpmcut.run_case(mpmcut.load_case(quick_case, short), tmp_path / "py", threads=1)
+    assert run.status == "complete" and run.exit_code == 0
+    for name in ("forces.csv", "history.csv", "rigid_forces.csv", "scene.toml"):
+        assert (tmp_path / "py" / name).read_bytes() == (cli / name).read_bytes(), name
+    # The arrays are the file's numbers exactly.
+    forces = run.forces()
+    cli_fc = [float(line.split(",")[1]) for line in (cli / "forces.csv").read_text().splitlines()[1:]]
+    assert list(forces.keys())[1] == "cutting_force_N_per_mm"
+    assert np.array_equal(forces["cutting_force_N_per_mm"], np.array(cli_fc)) and len(cli_fc) > 100
+    history = run.history()
+    assert history["step"][-1] == 150
+    summary = run.summary()
+    assert summary["status"] == "complete" and summary["steps"] == 150 and "energy_J_per_m" in summary
+
+
+def test_step_by_step_with_a_callback_matches_run_to_end(tmp_path, quick_case, short):
+    case = mpmcut.load_case(quick_case, short)
+    whole = mpmcut.run_case(case, tmp_path / "whole", threads=1)
+    seen = []
+
+    def record(run):
+        p = run.particles
+        seen.append((run.step_count, float(p["temperature"].max())))
+
+    stepped = mpmcut.run_case(case, tmp_path / "stepped", threads=1, callback=record, every=10)
+    assert [s for s, _ in seen] == list(range(10, 150, 10))
+    history = stepped.history()
+    for step, t_max in seen:  # the views show the state the history row recorded at that step
+        assert t_max == history["max_temperature_K"][list(history["step"]).index(step)]
+    by_steps = mpmcut.Run(case, tmp_path / "by_steps", threads=1)
+    while by_steps.step(7):
+        pass
+    assert by_steps.finish() == "complete"
+    for run in (stepped, by_steps):
+        assert (run.out / "forces.csv").read_bytes() == (whole.out / "forces.csv").read_bytes()
+
+
+def test_particle_fields_are_read_only_views_without_copies(tmp_path):
+    run = mpmcut.Run(mpmcut.case_from_toml(ELASTIC), tmp_path / "r", threads=1)
+    p = run.particles
+    assert set(p) == set(mpmcut.particle_fields)
+    n = run.particle_count
+    assert p["position"].shape == (n, 2) and p["stress"].shape == (n, 4)
+    assert p["deformation_gradient"].shape == (n, 2, 2) and p["body"].dtype == np.int32
+    assert np.allclose(p["deformation_gradient"][:, 0, 0], 1.0) and np.allclose(p["velocity"][:, 0], 1.0)
+    again = run.particles
+    for name in mpmcut.particle_fields:
+        assert not p[name].flags.owndata and not p[name].flags.writeable
+        assert np.shares_memory(p[name], again[name]), name  # both view the same storage
+    with pytest.raises(ValueError):
+        p["temperature"][0] = 1.0
+    x0 = np.array(p["position"])
+    with pytest.raises(RuntimeError, match="still referenced"):  # stepping would leave them dangling
+        run.step()
+    del p, again
+    run.step(3)
+    moved = run.particles["position"]
+    assert np.all(moved[:, 0] > x0[:, 0])  # the block moves right at 1 m/s
+    del moved
+    run.finish()
+
+
+def test_stop_checkpoint_and_resume_continue_the_same_run(tmp_path, quick_case, short):
+    case = mpmcut.load_case(quick_case, short)
+    whole = mpmcut.run_case(case, tmp_path / "whole", threads=1)
+
+    def stop_at_60(run):
+        return run.step_count < 60
+
+    stopped = mpmcut.run_case(case, tmp_path / "stopped", threads=1, callback=stop_at_60)
+    assert stopped.status == "interrupted" and stopped.exit_code == 130
+    assert stopped.summary()["last_checkpoint"].startswith("checkpoints/")
+    resumed = mpmcut.Run.resume(tmp_path / "stopped", threads=1)
+    assert resumed.step_count == 60
+    assert resumed.run() == "complete"
+    for name in ("forces.csv", "history.csv"):
+        assert (tmp_path / "stopped" / name).read_bytes() == (whole.out / name).read_bytes(), name
+    # An explicit checkpoint in the middle of a stepped run.
+    run = mpmcut.Run(case, tmp_path / "explicit", threads=1)
+    run.step(20)
+    assert run.checkpoint().exists()
+    run.stop()
+    assert run.run() == "interrupted"
