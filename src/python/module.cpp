@@ -75,30 +75,23 @@ class PyRun {
 
   // To the end; `callback(run)` after every `every` steps (a False return stops the run cleanly).
   std::string run(const std::optional<py::function>& callback, long every, py::handle self) {
-    {
-      long since = 0;
-      while (!ended_) {
-        views_.check_released();
-        bool more;
-        {
-          py::gil_scoped_release release;
-          more = run_->advance();
-        }
-        if (!more) ended_ = true;
-        if (PyErr_CheckSignals() != 0) interrupted_by_python();
-        if (callback && !ended_ && ++since >= every) {
-          since = 0;
-          const py::object keep_going = (*callback)(self);
-          if (!keep_going.is_none() && !keep_going.cast<bool>()) run_->stop_token().request_stop();
-        }
+    long since = 0;
+    while (!ended_) {
+      views_.check_released();
+      bool more;
+      {
+        py::gil_scoped_release release;
+        more = run_->advance();
       }
-      finish();
+      if (!more) ended_ = true;
+      if (PyErr_CheckSignals() != 0) interrupted_by_python();
+      if (callback && !ended_ && ++since >= every) {
+        since = 0;
+        const py::object keep_going = (*callback)(self);
+        if (!keep_going.is_none() && !keep_going.cast<bool>()) run_->stop_token().request_stop();
+      }
     }
-    if (pending_interrupt_) {
-      pending_interrupt_ = false;
-      throw py::error_already_set();
-    }
-    return status();
+    return finish();
   }
 
   std::string finish() {
@@ -144,7 +137,6 @@ class PyRun {
   std::unique_ptr<CaseRun> run_;
   ParticleViews views_;
   bool ended_ = false;
-  bool pending_interrupt_ = false;
   std::optional<int> exit_code_;
 };
 
