@@ -87,7 +87,15 @@ class PyRun {
       if (PyErr_CheckSignals() != 0) interrupted_by_python();
       if (callback && !ended_ && ++since >= every) {
         since = 0;
-        const py::object keep_going = (*callback)(self);
+        py::object keep_going;
+        try {
+          keep_going = (*callback)(self);
+        } catch (py::error_already_set&) {  // the callback failed (or Ctrl-C in it): stop cleanly, then raise
+          run_->stop_token().request_stop();
+          ended_ = true;
+          finish();
+          throw;
+        }
         if (!keep_going.is_none() && !keep_going.cast<bool>()) run_->stop_token().request_stop();
       }
     }

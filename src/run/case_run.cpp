@@ -162,6 +162,7 @@ void CaseRun::output_failed(const std::exception& e) {
 
 int CaseRun::finish() {
   begin();
+  if (exit_code_ == kExitComplete && !finished()) stopped();  // finished early: a stop (e.g. a library caller's)
   if (exit_code_ == kExitComplete || exit_code_ == kExitInterrupted) {
     try {
       // Before the extra snapshot below, which a resumed run does not have (it is dropped on resume).

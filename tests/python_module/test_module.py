@@ -121,3 +121,45 @@ def test_stop_checkpoint_and_resume_continue_the_same_run(tmp_path, quick_case, 
     assert run.checkpoint().exists()
     run.stop()
     assert run.run() == "interrupted"
+
+
+def test_the_gil_is_released_while_stepping(tmp_path, quick_case, short):
+    import threading
+    import time
+    run = mpmcut.Run(mpmcut.load_case(quick_case, short), tmp_path / "r", threads=1)
+    stepper = threading.Thread(target=run.step, args=(150,))
+    start = last = time.perf_counter()
+    longest = 0.0
+    stepper.start()
+    while stepper.is_alive():  # this thread runs only while the stepping one has let go of the GIL
+        now = time.perf_counter()
+        longest, last = max(longest, now - last), now
+    total = time.perf_counter() - start
+    stepper.join()
+    # Held through the steps, the GIL would stop this loop for about the whole stepping time.
+    assert run.step_count == 150 and longest < 0.5 * total, (longest, total)
+    run.finish()
+
+
+@pytest.mark.parametrize("where", ["callback", "step"])
+def test_ctrl_c_stops_cleanly_then_raises(tmp_path, quick_case, where):
+    import os
+    import signal
+    import threading
+    run = mpmcut.Run(mpmcut.load_case(quick_case), tmp_path / "r", threads=1)
+
+    def interrupt_in_callback(r):
+        if r.step_count == 20:
+            signal.raise_signal(signal.SIGINT)
+
+    def interrupt_from_outside(r):
+        if r.step_count == 20:  # arrives while the next steps run without the GIL
+            threading.Thread(target=os.kill, args=(os.getpid(), signal.SIGINT)).start()
+
+    with pytest.raises(KeyboardInterrupt):
+        run.run(interrupt_in_callback if where == "callback" else interrupt_from_outside)
+    assert run.status == "interrupted" and run.exit_code == 130
+    assert 20 <= run.step_count < 17566  # stopped long before the end
+    assert run.summary()["last_checkpoint"].startswith("checkpoints/")
+    resumed = mpmcut.Run.resume(run.out, threads=1)
+    assert resumed.step_count == run.step_count
