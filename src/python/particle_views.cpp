@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <pybind11/numpy.h>
@@ -12,54 +13,59 @@ namespace mpmcut::python {
 
 namespace {
 
-// The view of one field: its name, element layout, and the array's data pointer and element size.
-// The field list of core/particles.hpp; when the particle-field registry lands, this table comes from it.
-struct FieldView {
-  const char* name;
-  py::dtype dtype;
-  std::vector<py::ssize_t> element_shape;    // after the particle index
-  std::vector<py::ssize_t> element_strides;  // bytes
-  const void* data;
-  py::ssize_t element_bytes;
-};
-
+// How one particle's value of a field lies in memory: the array dimensions after the particle
+// index, and their strides in bytes.
 template <class T>
-FieldView scalar(const char* name, const std::vector<T>& v) {
-  return {name, py::dtype::of<T>(), {}, {}, v.data(), static_cast<py::ssize_t>(sizeof(T))};
-}
-FieldView vec2(const char* name, const std::vector<Vec2>& v) {
-  return {name, py::dtype::of<double>(), {2}, {sizeof(double)}, v.data(), sizeof(Vec2)};
-}
-// Eigen's Matrix2d is column-major: (row r, column c) at r + 2c.
-FieldView mat2(const char* name, const std::vector<Mat2>& v) {
-  return {name, py::dtype::of<double>(), {2, 2}, {sizeof(double), 2 * sizeof(double)}, v.data(), sizeof(Mat2)};
-}
-// xx, yy, zz, xy in that order (core/tensor.hpp).
-FieldView tensor(const char* name, const std::vector<PlaneStrainTensor>& v) {
-  return {name, py::dtype::of<double>(), {4}, {sizeof(double)}, v.data(), sizeof(PlaneStrainTensor)};
-}
+struct ElementLayout {  // double, std::int32_t: one number
+  static std::vector<py::ssize_t> shape() { return {}; }
+  static std::vector<py::ssize_t> strides() { return {}; }
+  using Number = T;
+};
+template <>
+struct ElementLayout<Vec2> {
+  static std::vector<py::ssize_t> shape() { return {2}; }
+  static std::vector<py::ssize_t> strides() { return {sizeof(double)}; }
+  using Number = double;
+};
+template <>
+struct ElementLayout<Mat2> {  // Eigen's Matrix2d is column-major: (row r, column c) at r + 2c
+  static std::vector<py::ssize_t> shape() { return {2, 2}; }
+  static std::vector<py::ssize_t> strides() { return {sizeof(double), 2 * sizeof(double)}; }
+  using Number = double;
+};
+template <>
+struct ElementLayout<PlaneStrainTensor> {  // xx, yy, zz, xy (core/tensor.hpp)
+  static std::vector<py::ssize_t> shape() { return {4}; }
+  static std::vector<py::ssize_t> strides() { return {sizeof(double)}; }
+  using Number = double;
+};
+static_assert(sizeof(Vec2) == 2 * sizeof(double) && sizeof(Mat2) == 4 * sizeof(double) &&
+              sizeof(PlaneStrainTensor) == 4 * sizeof(double));
 
-std::vector<FieldView> fields(const Particles& p) {
-  return {vec2("position", p.position),
-          vec2("velocity", p.velocity),
-          mat2("velocity_gradient", p.velocity_gradient),
-          mat2("deformation_gradient", p.deformation_gradient),
-          scalar("mass", p.mass),
-          scalar("volume", p.volume),
-          scalar("initial_volume", p.initial_volume),
-          tensor("stress", p.stress),
-          tensor("effective_stress", p.effective_stress),
-          scalar("plastic_strain", p.plastic_strain),
-          scalar("plastic_strain_rate", p.plastic_strain_rate),
-          scalar("temperature", p.temperature),
-          scalar("damage_initiation", p.damage_initiation),
-          scalar("damage", p.damage),
-          scalar("plastic_displacement", p.plastic_displacement),
-          scalar("initiation_yield_stress", p.initiation_yield_stress),
-          scalar("fracture_energy", p.fracture_energy),
-          scalar("damage_dissipation", p.damage_dissipation),
-          scalar("body", p.body),
-          scalar("material", p.material)};
+// fn(name, array) for every particle field, in the order of core/particles.hpp. (When the particle
+// field registry lands, this list comes from it.)
+template <class Fn>
+void for_each_field(const Particles& p, Fn&& fn) {
+  fn("position", p.position);
+  fn("velocity", p.velocity);
+  fn("velocity_gradient", p.velocity_gradient);
+  fn("deformation_gradient", p.deformation_gradient);
+  fn("mass", p.mass);
+  fn("volume", p.volume);
+  fn("initial_volume", p.initial_volume);
+  fn("stress", p.stress);
+  fn("effective_stress", p.effective_stress);
+  fn("plastic_strain", p.plastic_strain);
+  fn("plastic_strain_rate", p.plastic_strain_rate);
+  fn("temperature", p.temperature);
+  fn("damage_initiation", p.damage_initiation);
+  fn("damage", p.damage);
+  fn("plastic_displacement", p.plastic_displacement);
+  fn("initiation_yield_stress", p.initiation_yield_stress);
+  fn("fracture_energy", p.fracture_energy);
+  fn("damage_dissipation", p.damage_dissipation);
+  fn("body", p.body);
+  fn("material", p.material);
 }
 
 // The base object of the views: keeps the Run alive; its death tells the Run that the views are gone.
@@ -73,7 +79,7 @@ void ParticleViews::bind(py::module_& m) { py::class_<ViewGuard>(m, "_ParticleVi
 
 std::vector<std::string> ParticleViews::names() {
   std::vector<std::string> out;
-  for (const FieldView& f : fields(Particles{})) out.push_back(f.name);
+  for_each_field(Particles{}, [&](const char* name, const auto&) { out.push_back(name); });
   return out;
 }
 
@@ -82,14 +88,16 @@ py::dict ParticleViews::views(const Particles& particles, py::handle owner) {
   guard_ = py::module_::import("weakref").attr("ref")(guard);
   py::dict out;
   const py::ssize_t n = static_cast<py::ssize_t>(particles.size());
-  for (const FieldView& f : fields(particles)) {
-    std::vector<py::ssize_t> shape{n}, strides{f.element_bytes};
-    shape.insert(shape.end(), f.element_shape.begin(), f.element_shape.end());
-    strides.insert(strides.end(), f.element_strides.begin(), f.element_strides.end());
-    py::array a(f.dtype, shape, strides, f.data, guard);
+  for_each_field(particles, [&](const char* name, const auto& array) {
+    using T = typename std::decay_t<decltype(array)>::value_type;
+    using Layout = ElementLayout<T>;
+    std::vector<py::ssize_t> shape{n}, strides{static_cast<py::ssize_t>(sizeof(T))};
+    for (py::ssize_t d : Layout::shape()) shape.push_back(d);
+    for (py::ssize_t s : Layout::strides()) strides.push_back(s);
+    py::array a(py::dtype::of<typename Layout::Number>(), shape, strides, array.data(), guard);
     a.attr("setflags")(py::arg("write") = false);
-    out[f.name] = a;
-  }
+    out[name] = a;
+  });
   return out;
 }
 
