@@ -5,6 +5,7 @@
 #include <string>
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include "io/input_error.hpp"
 #include "studies/calibration.hpp"
@@ -25,7 +26,8 @@ const std::string kParameter = "[[parameter]]\nname = \"jc_A\"\nmin = 700e6\nmax
 const std::string kData = "[data]\ntraining = [{h_mm = 0.1, vc_m_per_min = 100.0}]\n";
 
 fs::path write(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / "mpmcut_test_calibration_config";
+  // One directory per process: test runs of several checkouts at once must not share files.
+  const fs::path dir = fs::temp_directory_path() / ("mpmcut_test_calibration_config_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   std::ofstream(dir / name) << text;
   return dir / name;

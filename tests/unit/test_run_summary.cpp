@@ -2,6 +2,7 @@
 // read, key for key; the observers' sections are carried whole; the headline readers find the values
 // the chip analysis and the cutting observer write.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 
@@ -58,7 +59,8 @@ TEST(RunSummary, FileRoundTripAndWrongTypesAreNamed) {
   Simulation sim(block());
   RunSummary s = summarize(sim, run_status::failed, 0.0, "it broke", 2);
   s.last_checkpoint = "checkpoints/checkpoint_000001.bin";
-  const std::filesystem::path file = std::filesystem::temp_directory_path() / "mpmcut_test_run_summary.json";
+  const std::filesystem::path file = std::filesystem::temp_directory_path() /
+                                       ("mpmcut_test_run_summary_" + std::to_string(::getpid()) + ".json");
   write_summary(file, s);
   const RunSummary back = read_summary(file);
   EXPECT_EQ(back.status, "failed");
