@@ -1,52 +1,111 @@
 #pragma once
 // Material points as a structure of arrays: one std::vector per field, accessed by name
 // (p.velocity[i]), so the hot loops are plain array loops and the code says what it touches.
+// The fields are declared in core/particle_fields.hpp; this file turns that list into the arrays,
+// a one-particle record with the same member names, and a loop over the fields for everything
+// that handles all of them (add, resize, permute, checkpoint, VTU).
 #include <cstddef>
 #include <cstdint>
+#include <string>
+#include <string_view>
 #include <vector>
 
+#include "core/particle_fields.hpp"
 #include "core/tensor.hpp"
 
 namespace mpmcut {
 
+// What one particle holds in a field; follows from the field's type.
+enum class FieldKind {
+  scalar,               // double
+  vector2,              // Vec2
+  tensor2x2,            // Mat2
+  plane_strain_tensor,  // PlaneStrainTensor: symmetric, xx yy zz xy
+  integer_id,           // std::int32_t
+};
+
+template <class T>
+constexpr FieldKind field_kind_of();
+template <> constexpr FieldKind field_kind_of<double>() { return FieldKind::scalar; }
+template <> constexpr FieldKind field_kind_of<Vec2>() { return FieldKind::vector2; }
+template <> constexpr FieldKind field_kind_of<Mat2>() { return FieldKind::tensor2x2; }
+template <> constexpr FieldKind field_kind_of<PlaneStrainTensor>() { return FieldKind::plane_strain_tensor; }
+template <> constexpr FieldKind field_kind_of<std::int32_t>() { return FieldKind::integer_id; }
+
+// One entry of MPMCUT_PARTICLE_FIELDS, without its type.
+struct ParticleFieldInfo {
+  std::string_view name;     // member name; checkpoint section particles.<name>
+  std::string_view unit;     // as in output names; "" dimensionless, "id" an index
+  unsigned flags = 0;        // kCheckpoint, kVtu, kVtuRead, kVtuOptional
+  std::string_view meaning;  // one line for the documentation
+  FieldKind kind = FieldKind::scalar;
+
+  bool has(unsigned flag) const { return (flags & flag) == flag; }
+  // The name with its unit, as output files show it: temperature_K, plastic_strain, body_id.
+  std::string output_name() const {
+    std::string s(name);
+    if (!unit.empty()) s.append("_").append(unit);
+    return s;
+  }
+};
+
+// One particle: a member of each field, same names as Particles, at the field's initial value.
+struct ParticleRow {
+#define MPMCUT_ROW_MEMBER(type, name, unit, initial, flags, meaning) type name = initial;
+  MPMCUT_PARTICLE_FIELDS(MPMCUT_ROW_MEMBER)
+#undef MPMCUT_ROW_MEMBER
+};
+
 struct Particles {
-  // Kinematics
-  std::vector<Vec2> position;          // m
-  std::vector<Vec2> velocity;          // m/s
-  std::vector<Mat2> velocity_gradient; // 1/s, L = grad v of the last step
-  std::vector<Mat2> deformation_gradient;  // F, in-plane (F_zz = 1 in plane strain)
-  // Mass and volume
-  std::vector<double> mass;            // kg per m of thickness
-  std::vector<double> volume;          // m^2 (per m of thickness), current
-  std::vector<double> initial_volume;  // m^2
-  // Stress: `stress` is the Cauchy stress used for the internal force (damage applied);
-  // `effective_stress` is the undamaged stress the return mapping works on.
-  std::vector<PlaneStrainTensor> stress;            // Pa
-  std::vector<PlaneStrainTensor> effective_stress;  // Pa
-  // Constitutive state (unused fields stay zero for models that do not need them)
-  std::vector<double> plastic_strain;       // equivalent plastic strain, -
-  std::vector<double> plastic_strain_rate;  // smoothed equivalent plastic strain rate, 1/s
-  std::vector<double> temperature;          // K
-  std::vector<double> damage_initiation;    // omega, JC initiation indicator (>= 1: initiated), -
-  std::vector<double> damage;               // D in [0, 1], -
-  std::vector<double> plastic_displacement; // u_pl after initiation, m
-  std::vector<double> initiation_yield_stress;  // sigma_y0 at initiation, Pa
-  std::vector<double> fracture_energy;          // G_f fixed at initiation (rate-dependent), J/m^2
-  // Damage dissipation of this particle since the start, J per m of thickness: divided by its
-  // fracture_energy it is the crack length (per m of thickness) its softening stands for.
-  std::vector<double> damage_dissipation;
-  // Identity
-  std::vector<std::int32_t> body;      // index into Scene::bodies
-  std::vector<std::int32_t> material;  // index into the material list
+#define MPMCUT_ARRAY_MEMBER(type, name, unit, initial, flags, meaning) std::vector<type> name;
+  MPMCUT_PARTICLE_FIELDS(MPMCUT_ARRAY_MEMBER)
+#undef MPMCUT_ARRAY_MEMBER
 
   std::size_t size() const { return position.size(); }
 
   // Appends one particle at rest with zero stress; every array grows by one.
   std::size_t add(const Vec2& x, const Vec2& v, double mass_kg, double volume_m2,
                   double temperature_K, int body_id, int material_id);
-
-  // Reorders every array by `order` (new index k takes old index order[k]).
+  // Appends one particle with the values of `row`.
+  std::size_t add(const ParticleRow& row);
+  // Sets every array to n entries; new ones take their field's initial value.
+  void resize(std::size_t n);
+  // Reorders every array by `order` (new index k takes old index order[k]); an order shorter than
+  // size() also drops the particles it does not name.
   void permute(const std::vector<std::size_t>& order);
+
+  // Particle i as one record, and back.
+  ParticleRow row(std::size_t i) const;
+  void set_row(std::size_t i, const ParticleRow& row);
 };
+
+// A field with its type: `array` and `value` select it in Particles and in ParticleRow.
+template <class T>
+struct ParticleField {
+  using value_type = T;
+  ParticleFieldInfo info;
+  std::vector<T> Particles::*array;
+  T ParticleRow::*value;
+};
+
+// Calls fn(const ParticleField<T>&) for every field, in the order of MPMCUT_PARTICLE_FIELDS.
+template <class Fn>
+void for_each_particle_field(Fn&& fn) {
+#define MPMCUT_VISIT_FIELD(type, name, unit, initial, flags, meaning) \
+  fn(ParticleField<type>{{#name, unit, flags, meaning, field_kind_of<type>()}, &Particles::name, &ParticleRow::name});
+  MPMCUT_PARTICLE_FIELDS(MPMCUT_VISIT_FIELD)
+#undef MPMCUT_VISIT_FIELD
+}
+
+// The fields as a list (docs, tests, messages).
+const std::vector<ParticleFieldInfo>& particle_field_infos();
+
+// A member added to Particles by hand instead of through MPMCUT_PARTICLE_FIELDS would be missed by
+// every loop over the fields (not sorted, not checkpointed): refuse it.
+#define MPMCUT_COUNT_FIELD(type, name, unit, initial, flags, meaning) +1
+inline constexpr std::size_t kParticleFieldCount = 0 MPMCUT_PARTICLE_FIELDS(MPMCUT_COUNT_FIELD);
+#undef MPMCUT_COUNT_FIELD
+static_assert(sizeof(Particles) == kParticleFieldCount * sizeof(std::vector<double>),
+              "Particles has a member that is not in MPMCUT_PARTICLE_FIELDS (core/particle_fields.hpp)");
 
 }  // namespace mpmcut
