@@ -28,19 +28,10 @@ constexpr char kMagic[8] = {'M', 'P', 'M', 'C', 'U', 'T', 'C', 'K'};
 constexpr std::uint32_t kHeaderBytes = 32;
 
 // --- Every field of the state, listed once --------------------------------------------------
-// A field added to Particles, EnergyTotals or RigidBodyState without being added here would be
-// silently lost on restart; these checks turn that into a compile error.
-struct ParticlesLayout {
-  std::vector<Vec2> a, b;
-  std::vector<Mat2> c, d;
-  std::vector<double> e, f, g;
-  std::vector<PlaneStrainTensor> h, i;
-  std::vector<double> j, k, l, m, n, o, p, s, t;
-  std::vector<std::int32_t> q, r;
-};
-static_assert(sizeof(Particles) == sizeof(ParticlesLayout),
-              "Particles gained or lost a field: update for_each_particle_array() in io/checkpoint.cpp "
-              "and bump kCheckpointFormatVersion");
+// The particle arrays come from the field registry (core/particle_fields.hpp): every field flagged
+// kCheckpoint is a section particles.<name> of raw values. A field added to EnergyTotals or
+// RigidBodyState without being added here would be silently lost on restart; these checks turn
+// that into a compile error.
 struct EnergyLayout {
   double a, b, c, d, e, f, g, h, i, j, k, l;
 };
@@ -55,30 +46,6 @@ static_assert(sizeof(RigidBodyState) == sizeof(RigidLayout),
               "RigidBodyState gained or lost a field: update the rigid-body section in io/checkpoint.cpp");
 static_assert(sizeof(Vec2) == 2 * sizeof(double) && sizeof(Mat2) == 4 * sizeof(double) &&
               sizeof(PlaneStrainTensor) == 4 * sizeof(double));
-
-template <class P, class F>
-void for_each_particle_array(P& p, F&& f) {
-  f("position", p.position);
-  f("velocity", p.velocity);
-  f("velocity_gradient", p.velocity_gradient);
-  f("deformation_gradient", p.deformation_gradient);
-  f("mass", p.mass);
-  f("volume", p.volume);
-  f("initial_volume", p.initial_volume);
-  f("stress", p.stress);
-  f("effective_stress", p.effective_stress);
-  f("plastic_strain", p.plastic_strain);
-  f("plastic_strain_rate", p.plastic_strain_rate);
-  f("temperature", p.temperature);
-  f("damage_initiation", p.damage_initiation);
-  f("damage", p.damage);
-  f("plastic_displacement", p.plastic_displacement);
-  f("initiation_yield_stress", p.initiation_yield_stress);
-  f("fracture_energy", p.fracture_energy);
-  f("damage_dissipation", p.damage_dissipation);
-  f("body", p.body);
-  f("material", p.material);
-}
 
 template <class E>
 auto energy_fields(E& e) {
@@ -243,7 +210,7 @@ std::string header_bytes(std::uint64_t payload_size, std::uint32_t payload_crc) 
   return h.data();
 }
 
-std::string particle_section_name(const char* field) { return std::string("particles.") + field; }
+std::string particle_section_name(std::string_view field) { return "particles." + std::string(field); }
 
 long step_of_checkpoint_name(const std::string& name) {
   constexpr std::string_view prefix = "checkpoint_", suffix = ".bin";
@@ -290,9 +257,10 @@ void write_checkpoint_file(const fs::path& file, const Simulation& sim, std::uin
   Bytes count;
   count.u64(P.size());
   w.section("particles", count);
-  for_each_particle_array(P, [&](const char* name, const auto& array) {
-    using T = typename std::decay_t<decltype(array)>::value_type;
-    w.section(particle_section_name(name), array.data(), array.size() * sizeof(T));
+  for_each_particle_field([&](const auto& f) {
+    if (!f.info.has(kCheckpoint)) return;
+    const auto& array = P.*f.array;
+    w.section(particle_section_name(f.info.name), array.data(), array.size() * sizeof(array[0]));
   });
 
   Bytes rigid;
@@ -416,15 +384,23 @@ Checkpoint decode_checkpoint(std::string_view bytes, const std::string& name) {
   {
     Reader r = section("particles");
     const std::uint64_t n = r.u64();
-    if (n > payload.size()) r.fail("implausible particle count");
+    std::uint64_t row_bytes = 0;  // one particle in the checkpointed sections
+    for_each_particle_field([&](const auto& f) {
+      if (f.info.has(kCheckpoint)) row_bytes += sizeof((c.particles.*f.array)[0]);
+    });
+    if (n > payload.size() / std::max<std::uint64_t>(row_bytes, 1)) r.fail("implausible particle count");
     finish(r);
-    for_each_particle_array(c.particles, [&](const char* field, auto& array) {
-      using T = typename std::decay_t<decltype(array)>::value_type;
-      const std::string key = particle_section_name(field);
+    c.particles.resize(n);  // fields without kCheckpoint keep their initial value
+    for_each_particle_field([&](const auto& f) {
+      if (!f.info.has(kCheckpoint)) return;
+      auto& array = c.particles.*f.array;
+      // A file without this field comes from an mpmcut without it: refuse rather than guess.
+      const std::string key = particle_section_name(f.info.name);
+      if (sections.find(key) == sections.end())
+        all.fail(fmt::format("has no particle field '{}' (written by an mpmcut without that field)", f.info.name));
       Reader a = section(key);
-      const std::string_view data = a.take(n * sizeof(T));
+      const std::string_view data = a.take(n * sizeof(array[0]));
       finish(a);
-      array.resize(n);
       std::memcpy(static_cast<void*>(array.data()), data.data(), data.size());
     });
   }
@@ -508,8 +484,9 @@ void Checkpoint::restore(Simulation& sim) && {
   // A CRC-valid file from this program is consistent; these checks keep a hand-made one from
   // indexing out of bounds.
   const std::size_t n = particles.size();
-  for_each_particle_array(particles, [&](const char* field, const auto& array) {
-    if (array.size() != n) throw CheckpointError(fmt::format("{}: particle array '{}' has the wrong length", where, field));
+  for_each_particle_field([&](const auto& f) {
+    if ((particles.*f.array).size() != n)
+      throw CheckpointError(fmt::format("{}: particle array '{}' has the wrong length", where, f.info.name));
   });
   for (std::size_t p = 0; p < n; ++p) {
     if (particles.body[p] < 0 || static_cast<std::size_t>(particles.body[p]) >= scene.bodies.size() ||

@@ -82,7 +82,9 @@ struct Checkpoint {
 };
 
 // 2: EnergyTotals::viscous; 3: Particles::fracture_energy; 4: Particles::damage_dissipation;
-// 5: EnergyTotals' algorithmic terms (FLIP/PIC blend, contact safeguard, removed) and initial energy
+// 5: EnergyTotals' algorithmic terms (FLIP/PIC blend, contact safeguard, removed) and initial energy.
+// Particle fields are sections named after the field (core/particle_fields.hpp): a new one needs no
+// new version, a file without it is refused by name.
 inline constexpr std::uint32_t kCheckpointFormatVersion = 5;
 
 // scene_hash(): run/case_loading.hpp (the expanded scene includes records of layers above io).

@@ -10,9 +10,12 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include <fmt/core.h>
+
+#include "io/vtu_field_layout.hpp"
 
 namespace mpmcut {
 
@@ -78,7 +81,8 @@ class Reader {
  private:
   // The value of attribute `key` in the tag text `tag`, or "" when absent.
   static std::string attribute(std::string_view tag, std::string_view key) {
-    const std::string pattern = " " + std::string(key) + "=\"";
+    std::string pattern = " ";  // appended, not `" " + ...`: GCC 12 warns falsely (-Wrestrict) on that
+    pattern.append(key).append("=\"");
     const std::size_t at = tag.find(pattern);
     if (at == std::string_view::npos) return {};
     const std::size_t begin = at + pattern.size();
@@ -157,14 +161,21 @@ class Reader {
   std::size_t data_start_ = 0, data_end_ = 0;
 };
 
-// Copies a scalar Float64 array into `field`.
-void scalar(const Reader& r, const char* name, std::vector<double>& field) {
-  field = r.array<double>(name, "Float64", 1, r.points());
-}
-
-PlaneStrainTensor tensor_at(const std::vector<double>& a, std::size_t i) {
-  // VTK symmetric order xx yy zz xy yz xz.
-  return {a[6 * i], a[6 * i + 1], a[6 * i + 2], a[6 * i + 3]};
+// Reads field f's array into p (already sized); a kVtuOptional field that is absent keeps its
+// initial value (a snapshot written before the field existed).
+template <class T>
+void read_field(const Reader& r, const ParticleField<T>& f, Particles& p) {
+  const std::string name = vtu_array_name(f.info);
+  if (!r.has(name) && f.info.has(kVtuOptional)) return;
+  std::vector<T>& a = p.*f.array;
+  const std::size_t n = r.points();
+  if constexpr (std::is_same_v<T, std::int32_t>) {
+    a = r.array<std::int32_t>(name, "Int32", 1, n);
+  } else {
+    constexpr int c = vtu_components(field_kind_of<T>());
+    const std::vector<double> raw = r.array<double>(name, "Float64", c, n);
+    for (std::size_t i = 0; i < n; ++i) from_vtk(&raw[i * c], a[i]);
+  }
 }
 
 }  // namespace
@@ -176,48 +187,15 @@ VtuSnapshot read_particles_vtu(const std::filesystem::path& file) {
   const std::vector<double> time = r.array<double>("TimeValue", "Float64", 1, 1);
   snap.time_s = time[0];
 
-  const std::vector<double> points = r.array<double>("Points", "Float64", 3, n);
-  const std::vector<double> velocity = r.array<double>("velocity_m_per_s", "Float64", 3, n);
-  const std::vector<double> stress = r.array<double>("stress_Pa", "Float64", 6, n);
-  const std::vector<double> effective = r.array<double>("effective_stress_Pa", "Float64", 6, n);
-  const std::vector<double> jacobian = r.array<double>("deformation_jacobian_J", "Float64", 1, n);
-  const std::vector<double> gradient = r.array<double>("velocity_gradient_per_s", "Float64", 9, n);
-
+  // Every field flagged kVtuRead from its array; the others keep their initial value here.
   Particles& p = snap.particles;
-  scalar(r, "mass_kg_per_m", p.mass);
-  scalar(r, "volume_m3_per_m", p.volume);
-  scalar(r, "plastic_strain", p.plastic_strain);
-  scalar(r, "plastic_strain_rate_per_s", p.plastic_strain_rate);
-  scalar(r, "temperature_K", p.temperature);
-  scalar(r, "damage_initiation", p.damage_initiation);
-  scalar(r, "damage", p.damage);
-  scalar(r, "plastic_displacement_m", p.plastic_displacement);
-  scalar(r, "fracture_energy_J_per_m2", p.fracture_energy);
-  // Snapshots written before this field existed: zeros (the run's ledger still has the total).
-  if (r.has("damage_dissipation_J_per_m")) {
-    scalar(r, "damage_dissipation_J_per_m", p.damage_dissipation);
-  } else {
-    p.damage_dissipation.assign(n, 0.0);
-  }
-  p.body = r.array<std::int32_t>("body_id", "Int32", 1, n);
-  p.material = r.array<std::int32_t>("material_id", "Int32", 1, n);
-
-  p.position.resize(n);
-  p.velocity.resize(n);
-  p.velocity_gradient.resize(n);
-  p.deformation_gradient.resize(n);
-  p.stress.resize(n);
-  p.effective_stress.resize(n);
-  p.initial_volume.resize(n);
-  p.initiation_yield_stress.assign(n, 0.0);
+  p.resize(n);
+  for_each_particle_field([&](const auto& f) {
+    if (f.info.has(kVtuRead)) read_field(r, f, p);
+  });
+  // Not in the file but rebuilt from det F: F = sqrt(J) I, V0 = V / J.
+  const std::vector<double> jacobian = r.array<double>("deformation_jacobian_J", "Float64", 1, n);
   for (std::size_t i = 0; i < n; ++i) {
-    p.position[i] = Vec2(points[3 * i], points[3 * i + 1]);
-    p.velocity[i] = Vec2(velocity[3 * i], velocity[3 * i + 1]);
-    p.stress[i] = tensor_at(stress, i);
-    p.effective_stress[i] = tensor_at(effective, i);
-    Mat2 L;
-    L << gradient[9 * i], gradient[9 * i + 1], gradient[9 * i + 3], gradient[9 * i + 4];
-    p.velocity_gradient[i] = L;
     const double J = jacobian[i];
     if (!(J > 0.0))
       r.fail(fmt::format("particle {} has deformation_jacobian_J = {} (must be > 0)", i, J));

@@ -8,15 +8,11 @@
 // a truncated or corrupt file, a missing array) is a std::runtime_error naming the file and
 // what was wrong.
 //
-// What comes back, per Particles array:
-//   position <- Points (x, y; z dropped)          velocity <- velocity_m_per_s (x, y)
-//   stress, effective_stress <- xx yy zz xy        mass, volume, plastic_strain, plastic_strain_rate,
-//   velocity_gradient <- the in-plane 2x2 of L     temperature, damage_initiation, damage,
-//   body, material <- body_id, material_id          plastic_displacement, fracture_energy,
-//                                                  damage_dissipation <- their arrays
-// all bit-exact. Not stored in the file, so reconstructed:
+// What comes back: every field flagged kVtuRead in core/particle_fields.hpp, from its array
+// (io/vtu_field_layout.hpp), bit-exact; a kVtuOptional one that an older snapshot lacks reads as
+// its initial value. Not stored in the file, so reconstructed:
 //   deformation_gradient = sqrt(J) I (only J = det F is stored; det F round-trips, F itself does not)
-//   initial_volume = volume / J;  initiation_yield_stress = 0.
+//   initial_volume = volume / J;  the other fields without kVtuRead: their initial value.
 // Derived arrays (von_mises_stress_Pa, pressure_Pa, density_kg_per_m3) are not read.
 #include <filesystem>
 

@@ -1,14 +1,17 @@
 #include "io/vtu_writer.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cstdint>
 #include <functional>
 #include <limits>
 #include <stdexcept>
+#include <type_traits>
 
 #include <fmt/core.h>
 
 #include "io/atomic_file.hpp"
+#include "io/vtu_field_layout.hpp"
 
 namespace mpmcut {
 
@@ -17,71 +20,24 @@ static_assert(std::endian::native == std::endian::little,
 
 namespace {
 
-// A point-data field: its description and how to get one particle's components.
-// Integer fields return exact small integers through the double and are stored as Int32.
-struct Field {
+// Point data computed from the fields for the reader's convenience; not stored per particle,
+// not read back.
+struct DerivedField {
   VtuFieldInfo info;
-  void (*value)(const Particles& p, std::size_t i, double* out);
+  double (*value)(const Particles& p, std::size_t i);
 };
 
-void symmetric_tensor(const PlaneStrainTensor& t, double* out) {
-  // VTK order xx yy zz xy yz xz; yz = xz = 0 in plane strain.
-  out[0] = t.xx; out[1] = t.yy; out[2] = t.zz; out[3] = t.xy; out[4] = 0.0; out[5] = 0.0;
-}
-
-const std::vector<Field>& fields() {
-  static const std::vector<Field> table = {
-      {{"velocity_m_per_s", 3, false, "particle velocity (z = 0)"},
-       [](const Particles& p, std::size_t i, double* o) {
-         o[0] = p.velocity[i].x(); o[1] = p.velocity[i].y(); o[2] = 0.0;
-       }},
-      {{"stress_Pa", 6, false, "Cauchy stress with damage applied (xx yy zz xy yz xz)"},
-       [](const Particles& p, std::size_t i, double* o) { symmetric_tensor(p.stress[i], o); }},
+const std::vector<DerivedField>& derived_fields() {
+  static const std::vector<DerivedField> table = {
       {{"von_mises_stress_Pa", 1, false, "von Mises equivalent of stress_Pa"},
-       [](const Particles& p, std::size_t i, double* o) { o[0] = p.stress[i].von_mises(); }},
+       [](const Particles& p, std::size_t i) { return p.stress[i].von_mises(); }},
       {{"pressure_Pa", 1, false, "-trace(stress)/3, positive in compression"},
-       [](const Particles& p, std::size_t i, double* o) { o[0] = -p.stress[i].mean(); }},
-      {{"effective_stress_Pa", 6, false, "undamaged stress of the return mapping"},
-       [](const Particles& p, std::size_t i, double* o) {
-         symmetric_tensor(p.effective_stress[i], o);
-       }},
-      {{"mass_kg_per_m", 1, false, "particle mass per m of thickness"},
-       [](const Particles& p, std::size_t i, double* o) { o[0] = p.mass[i]; }},
-      {{"volume_m3_per_m", 1, false, "current particle volume per m of thickness (an area)"},
-       [](const Particles& p, std::size_t i, double* o) { o[0] = p.volume[i]; }},
+       [](const Particles& p, std::size_t i) { return -p.stress[i].mean(); }},
       {{"density_kg_per_m3", 1, false, "mass / volume"},
-       [](const Particles& p, std::size_t i, double* o) { o[0] = p.mass[i] / p.volume[i]; }},
-      {{"body_id", 1, true, "index of the body in the scene"},
-       [](const Particles& p, std::size_t i, double* o) { o[0] = p.body[i]; }},
-      {{"material_id", 1, true, "index of the material"},
-       [](const Particles& p, std::size_t i, double* o) { o[0] = p.material[i]; }},
-      {{"plastic_strain", 1, false, "equivalent plastic strain"},
-       [](const Particles& p, std::size_t i, double* o) { o[0] = p.plastic_strain[i]; }},
-      {{"plastic_strain_rate_per_s", 1, false, "smoothed equivalent plastic strain rate"},
-       [](const Particles& p, std::size_t i, double* o) { o[0] = p.plastic_strain_rate[i]; }},
-      {{"temperature_K", 1, false, "temperature"},
-       [](const Particles& p, std::size_t i, double* o) { o[0] = p.temperature[i]; }},
-      {{"damage_initiation", 1, false, "Johnson-Cook initiation indicator omega (>= 1: initiated)"},
-       [](const Particles& p, std::size_t i, double* o) { o[0] = p.damage_initiation[i]; }},
-      {{"damage", 1, false, "damage D in [0, 1]"},
-       [](const Particles& p, std::size_t i, double* o) { o[0] = p.damage[i]; }},
-      {{"plastic_displacement_m", 1, false, "plastic displacement after damage initiation"},
-       [](const Particles& p, std::size_t i, double* o) { o[0] = p.plastic_displacement[i]; }},
-      {{"fracture_energy_J_per_m2", 1, false, "G_f fixed at damage initiation (0 before)"},
-       [](const Particles& p, std::size_t i, double* o) { o[0] = p.fracture_energy[i]; }},
-      {{"damage_dissipation_J_per_m", 1, false,
-        "damage dissipation of the particle since the start (per m of thickness); / G_f = its crack length"},
-       [](const Particles& p, std::size_t i, double* o) { o[0] = p.damage_dissipation[i]; }},
+       [](const Particles& p, std::size_t i) { return p.mass[i] / p.volume[i]; }},
       {{"deformation_jacobian_J", 1, false, "J = det F, current over initial volume"},
-       [](const Particles& p, std::size_t i, double* o) {
-         o[0] = p.deformation_gradient[i].determinant();  // F_zz = 1 in plane strain
-       }},
-      {{"velocity_gradient_per_s", 9, false, "L = grad v, row-major, L_ij = dv_i/dx_j"},
-       [](const Particles& p, std::size_t i, double* o) {
-         const Mat2& L = p.velocity_gradient[i];
-         o[0] = L(0, 0); o[1] = L(0, 1); o[2] = 0.0;
-         o[3] = L(1, 0); o[4] = L(1, 1); o[5] = 0.0;
-         o[6] = 0.0;     o[7] = 0.0;     o[8] = 0.0;
+       [](const Particles& p, std::size_t i) {
+         return p.deformation_gradient[i].determinant();  // F_zz = 1 in plane strain
        }},
   };
   return table;
@@ -125,20 +81,26 @@ Block int32_block(std::string name, int components, std::size_t n,
           }};
 }
 
-Block field_block(const Particles& p, const Field& f) {
-  const std::size_t n = p.size();
-  const int c = f.info.components;
-  if (!f.info.integer) {
-    return float64_block(f.info.name, c, n, [&p, &f, c, n](std::vector<double>& buf) {
-      for (std::size_t i = 0; i < n; ++i) f.value(p, i, &buf[i * c]);
+// One registered field as point data (or as the Points), in VTK's components.
+template <class T>
+Block field_block(const Particles& p, const ParticleField<T>& f) {
+  const std::vector<T>& a = p.*f.array;
+  const std::size_t n = a.size();
+  if constexpr (std::is_same_v<T, std::int32_t>) {
+    return int32_block(vtu_array_name(f.info), 1, n,
+                       [&a](std::vector<std::int32_t>& buf) { std::copy(a.begin(), a.end(), buf.begin()); });
+  } else {
+    constexpr int c = vtu_components(field_kind_of<T>());
+    return float64_block(vtu_array_name(f.info), c, n, [&a, n](std::vector<double>& buf) {
+      for (std::size_t i = 0; i < n; ++i) to_vtk(a[i], &buf[i * c]);
     });
   }
-  return int32_block(f.info.name, c, n, [&p, &f, c, n](std::vector<std::int32_t>& buf) {
-    double v[9];
-    for (std::size_t i = 0; i < n; ++i) {
-      f.value(p, i, v);
-      for (int k = 0; k < c; ++k) buf[i * c + k] = static_cast<std::int32_t>(v[k]);
-    }
+}
+
+Block derived_block(const Particles& p, const DerivedField& f) {
+  const std::size_t n = p.size();
+  return float64_block(f.info.name, 1, n, [&p, &f, n](std::vector<double>& buf) {
+    for (std::size_t i = 0; i < n; ++i) buf[i] = f.value(p, i);
   });
 }
 
@@ -172,7 +134,12 @@ std::string declare(const std::vector<Block>& blocks, std::size_t& offset, const
 const std::vector<VtuFieldInfo>& vtu_point_fields() {
   static const std::vector<VtuFieldInfo> infos = [] {
     std::vector<VtuFieldInfo> v;
-    for (const Field& f : fields()) v.push_back(f.info);
+    for_each_particle_field([&](const auto& f) {
+      if (!vtu_point_data(f.info)) return;
+      v.push_back({vtu_array_name(f.info), vtu_components(f.info.kind), f.info.kind == FieldKind::integer_id,
+                   std::string(f.info.meaning)});
+    });
+    for (const DerivedField& f : derived_fields()) v.push_back(f.info);
     return v;
   }();
   return infos;
@@ -192,12 +159,13 @@ void write_particles_vtu(const Particles& p, const std::filesystem::path& file, 
       float64_block("TimeValue", 1, 1, constant(time_s)),  // ParaView's name for the time, s
       float64_block("time_s", 1, 1, constant(time_s)),
   };
-  const std::vector<Block> points = {
-      float64_block("Points", 3, n, [&p, n](std::vector<double>& b) {
-        for (std::size_t i = 0; i < n; ++i) {
-          b[3 * i] = p.position[i].x(); b[3 * i + 1] = p.position[i].y(); b[3 * i + 2] = 0.0;
-        }
-      })};
+  const std::vector<Block> points = [&p] {
+    std::vector<Block> blocks;
+    for_each_particle_field([&](const auto& f) {
+      if (f.info.name == "position") blocks.push_back(field_block(p, f));
+    });
+    return blocks;
+  }();
   Block types{"types", "UInt8", 1, n, [n](std::ostream& out) {
                 constexpr std::uint8_t vtk_vertex = 1;
                 const std::vector<std::uint8_t> buf(n, vtk_vertex);
@@ -215,7 +183,10 @@ void write_particles_vtu(const Particles& p, const std::filesystem::path& file, 
       std::move(types)};
   const std::vector<Block> point_data = [&p] {
     std::vector<Block> blocks;
-    for (const Field& f : fields()) blocks.push_back(field_block(p, f));
+    for_each_particle_field([&](const auto& f) {
+      if (vtu_point_data(f.info)) blocks.push_back(field_block(p, f));
+    });
+    for (const DerivedField& f : derived_fields()) blocks.push_back(derived_block(p, f));
     return blocks;
   }();
 

@@ -6,9 +6,11 @@
 // times faster to write and read than ASCII and needs no base64 pass. The file is written
 // to a temporary and renamed, so a snapshot on disk is always complete.
 //
-// Every point-data array carries its unit in its name (see vtu_point_fields()); names without a
-// unit suffix are dimensionless. Tensors use VTK's component order: a symmetric tensor has
-// 6 components xx yy zz xy yz xz, a full tensor 9 components in row-major order.
+// The point data are every particle field flagged kVtu in core/particle_fields.hpp, named
+// <name>_<unit> (io/vtu_field_layout.hpp), then a few derived arrays (von Mises stress, pressure,
+// density, det F); see vtu_point_fields(). Names without a unit suffix are dimensionless. Tensors
+// use VTK's component order: a symmetric tensor has 6 components xx yy zz xy yz xz, a full tensor
+// 9 components in row-major order.
 // FieldData holds the snapshot time twice: "TimeValue" (the name ParaView looks for, in s)
 // and "time_s".
 #include <filesystem>

@@ -55,19 +55,10 @@ bool same_bytes(const std::vector<T>& a, const std::vector<T>& b) {
 }
 
 bool same_state(const Simulation& a, const Simulation& b) {
-  const Particles &p = a.particles(), &q = b.particles();
-  bool same = same_bytes(p.position, q.position) && same_bytes(p.velocity, q.velocity) &&
-              same_bytes(p.velocity_gradient, q.velocity_gradient) &&
-              same_bytes(p.deformation_gradient, q.deformation_gradient) && same_bytes(p.mass, q.mass) &&
-              same_bytes(p.volume, q.volume) && same_bytes(p.initial_volume, q.initial_volume) &&
-              same_bytes(p.stress, q.stress) && same_bytes(p.effective_stress, q.effective_stress) &&
-              same_bytes(p.plastic_strain, q.plastic_strain) && same_bytes(p.plastic_strain_rate, q.plastic_strain_rate) &&
-              same_bytes(p.temperature, q.temperature) && same_bytes(p.damage_initiation, q.damage_initiation) &&
-              same_bytes(p.damage, q.damage) && same_bytes(p.plastic_displacement, q.plastic_displacement) &&
-              same_bytes(p.initiation_yield_stress, q.initiation_yield_stress) &&
-              same_bytes(p.fracture_energy, q.fracture_energy) &&
-              same_bytes(p.damage_dissipation, q.damage_dissipation) && same_bytes(p.body, q.body) &&
-              same_bytes(p.material, q.material);
+  bool same = true;
+  for_each_particle_field([&](const auto& f) {
+    same = same && same_bytes(a.particles().*f.array, b.particles().*f.array);
+  });
   same = same && std::memcmp(&a.energy(), &b.energy(), sizeof(EnergyTotals)) == 0;
   same = same && a.time() == b.time() && a.step_count() == b.step_count() && a.last_dt() == b.last_dt();
   for (std::size_t r = 0; same && r < a.rigid_bodies().size(); ++r) {
