@@ -10,8 +10,8 @@ MaterialPointDriver::MaterialPointDriver(const Material& material, double temper
   const double V0 = 1.0;
   particles_.add(Vec2::Zero(), Vec2::Zero(), material.parameters().density * V0, V0, temperature_K, 0, 0);
   MaterialPointRecord r;
+  static_cast<ParticleRow&>(r) = particles_.row(0);
   r.density = material.parameters().density;
-  r.temperature = temperature_K;
   history_.push_back(r);
 }
 
@@ -25,21 +25,11 @@ ConstitutiveIncrement MaterialPointDriver::advance(Particles& p, const Mat2& L, 
 const MaterialPointRecord& MaterialPointDriver::record(const Mat2& L, double dt, const ConstitutiveIncrement& inc) {
   const MaterialPointRecord& prev = history_.back();
   MaterialPointRecord r;
+  static_cast<ParticleRow&>(r) = particles_.row(0);
   r.step = prev.step + 1;
   r.time = prev.time + dt;
   r.velocity_gradient = L;
-  r.deformation_gradient = particles_.deformation_gradient[0];
-  r.volume = particles_.volume[0];
   r.density = particles_.mass[0] / particles_.volume[0];
-  r.stress = particles_.stress[0];
-  r.effective_stress = particles_.effective_stress[0];
-  r.plastic_strain = particles_.plastic_strain[0];
-  r.plastic_strain_rate = particles_.plastic_strain_rate[0];
-  r.temperature = particles_.temperature[0];
-  r.damage_initiation = particles_.damage_initiation[0];
-  r.damage = particles_.damage[0];
-  r.plastic_displacement = particles_.plastic_displacement[0];
-  r.initiation_yield_stress = particles_.initiation_yield_stress[0];
   r.increment = inc;
   r.cumulative = prev.cumulative;
   r.cumulative.plastic_work += inc.plastic_work;

@@ -10,23 +10,13 @@
 
 namespace mpmcut {
 
-// The state after a step (or the initial state) and the energies of that step.
-struct MaterialPointRecord {
+// The state after a step (or the initial state) and the energies of that step. The particle's
+// fields are the ParticleRow members (same names as the Particles arrays: stress, plastic_strain,
+// damage, ...; velocity_gradient is the L applied in this step, after any control).
+struct MaterialPointRecord : ParticleRow {
   long step = 0;
   double time = 0.0;                  // s
-  Mat2 velocity_gradient = Mat2::Zero();  // L applied in this step (after any control), 1/s
-  Mat2 deformation_gradient = Mat2::Identity();
-  double volume = 1.0;                // m^2 (V0 = 1)
-  double density = 0.0;               // kg/m^3
-  PlaneStrainTensor stress;           // Cauchy stress (damage applied), Pa
-  PlaneStrainTensor effective_stress; // undamaged stress, Pa
-  double plastic_strain = 0.0;
-  double plastic_strain_rate = 0.0;   // the smoothed rate stored by the material, 1/s
-  double temperature = 0.0;           // K
-  double damage_initiation = 0.0;     // omega
-  double damage = 0.0;                // D
-  double plastic_displacement = 0.0;  // u_pl, m
-  double initiation_yield_stress = 0.0;  // sigma_y0, Pa
+  double density = 0.0;               // mass / volume, kg/m^3
   ConstitutiveIncrement increment;    // this step's energies, J per m
   ConstitutiveIncrement cumulative;   // sums since the start, J per m
   double elastic_energy = 0.0;        // Material::elastic_energy after the step, J per m
