@@ -384,23 +384,25 @@ Checkpoint decode_checkpoint(std::string_view bytes, const std::string& name) {
   {
     Reader r = section("particles");
     const std::uint64_t n = r.u64();
-    std::uint64_t row_bytes = 0;  // one particle in the checkpointed sections
-    for_each_particle_field([&](const auto& f) {
-      if (f.info.has(kCheckpoint)) row_bytes += sizeof((c.particles.*f.array)[0]);
-    });
-    if (n > payload.size() / std::max<std::uint64_t>(row_bytes, 1)) r.fail("implausible particle count");
     finish(r);
+    // Every checkpointed field must be there with n values before n is trusted for allocating. A
+    // file without a field comes from an mpmcut without it: refuse rather than guess.
+    for_each_particle_field([&](const auto& f) {
+      if (!f.info.has(kCheckpoint)) return;
+      const std::string key = particle_section_name(f.info.name);
+      const auto it = sections.find(key);
+      if (it == sections.end())
+        all.fail(fmt::format("has no particle field '{}' (written by an mpmcut without that field)", f.info.name));
+      const std::size_t value_bytes = sizeof((c.particles.*f.array)[0]);
+      if (it->second.size() % value_bytes != 0 || it->second.size() / value_bytes != n)
+        all.fail(fmt::format("section '{}' holds {} bytes, not {} particles of {} bytes", key, it->second.size(), n,
+                             value_bytes));
+    });
     c.particles.resize(n);  // fields without kCheckpoint keep their initial value
     for_each_particle_field([&](const auto& f) {
       if (!f.info.has(kCheckpoint)) return;
       auto& array = c.particles.*f.array;
-      // A file without this field comes from an mpmcut without it: refuse rather than guess.
-      const std::string key = particle_section_name(f.info.name);
-      if (sections.find(key) == sections.end())
-        all.fail(fmt::format("has no particle field '{}' (written by an mpmcut without that field)", f.info.name));
-      Reader a = section(key);
-      const std::string_view data = a.take(n * sizeof(array[0]));
-      finish(a);
+      const std::string_view data = sections.find(particle_section_name(f.info.name))->second;
       std::memcpy(static_cast<void*>(array.data()), data.data(), data.size());
     });
   }

@@ -5,6 +5,7 @@
 // Each particle of each field holds its own value, so a field that is skipped or mixed up shows.
 #include <gtest/gtest.h>
 #include <unistd.h>
+#include <zlib.h>
 
 #include <algorithm>
 #include <cstring>
@@ -162,6 +163,26 @@ TEST(ParticleFields, RowAndSetRowCarryEveryField) {
   expect_rows(r, 6, [](std::size_t at) { return at; });
 }
 
+// A scene to build a Simulation for the checkpoint writer; its particles are replaced.
+constexpr const char* kElasticBlock = R"toml(
+[grid]
+cell_size = 1.0e-3
+min = [0.0, 0.0]
+max = [4.0e-3, 4.0e-3]
+[solver]
+end_time = 1.0e-6
+[[material]]
+name = "steel"
+model = "elastic"
+density = 7800.0
+youngs_modulus = 2.0e11
+poisson_ratio = 0.3
+[[body]]
+name = "block"
+material = "steel"
+rectangle = { min = [1.0e-3, 1.0e-3], max = [3.0e-3, 3.0e-3] }
+)toml";
+
 class ParticleFieldFiles : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -181,25 +202,7 @@ class ParticleFieldFiles : public ::testing::Test {
 };
 
 TEST_F(ParticleFieldFiles, CheckpointRoundTripsEveryCheckpointedFieldBitExact) {
-  const Scene scene = parse_scene(R"toml(
-[grid]
-cell_size = 1.0e-3
-min = [0.0, 0.0]
-max = [4.0e-3, 4.0e-3]
-[solver]
-end_time = 1.0e-6
-[[material]]
-name = "steel"
-model = "elastic"
-density = 7800.0
-youngs_modulus = 2.0e11
-poisson_ratio = 0.3
-[[body]]
-name = "block"
-material = "steel"
-rectangle = { min = [1.0e-3, 1.0e-3], max = [3.0e-3, 3.0e-3] }
-)toml",
-                                  "fields.toml");
+  const Scene scene = parse_scene(kElasticBlock, "fields.toml");
   Simulation sim(scene);
   const std::size_t n = 17;
   sim.particles() = filled(n);
@@ -213,6 +216,50 @@ rectangle = { min = [1.0e-3, 1.0e-3], max = [3.0e-3, 3.0e-3] }
     const std::uint32_t length = static_cast<std::uint32_t>(key.size());
     const std::string head = std::string(reinterpret_cast<const char*>(&length), sizeof length) + key;
     EXPECT_EQ(bytes.find(head) != std::string::npos, f.info.has(kCheckpoint)) << f.info.name;
+  });
+}
+
+// The checkpoint `bytes` without its section `name`, header (payload size, both CRCs) made to fit:
+// what an mpmcut without that field would have written.
+std::string without_section(const std::string& bytes, const std::string& name) {
+  std::string payload;
+  for (std::size_t at = 32; at < bytes.size();) {
+    std::uint32_t length = 0;
+    std::uint64_t data = 0;
+    std::memcpy(&length, bytes.data() + at, sizeof length);
+    std::memcpy(&data, bytes.data() + at + 4 + length, sizeof data);
+    const std::size_t end = at + 4 + length + 8 + data;
+    if (bytes.compare(at + 4, length, name) != 0 || length != name.size()) payload += bytes.substr(at, end - at);
+    at = end;
+  }
+  std::string header = bytes.substr(0, 32);
+  const std::uint64_t size = payload.size();
+  const auto crc = [](const std::string& b, std::size_t n) {
+    return static_cast<std::uint32_t>(crc32_z(crc32_z(0, nullptr, 0), reinterpret_cast<const Bytef*>(b.data()), n));
+  };
+  const std::uint32_t payload_crc = crc(payload, payload.size());
+  std::memcpy(header.data() + 16, &size, sizeof size);
+  std::memcpy(header.data() + 24, &payload_crc, sizeof payload_crc);
+  const std::uint32_t header_crc = crc(header, 28);
+  std::memcpy(header.data() + 28, &header_crc, sizeof header_crc);
+  return header + payload;
+}
+
+TEST_F(ParticleFieldFiles, CheckpointWithoutAFieldIsRefusedByItsName) {
+  const Scene scene = parse_scene(kElasticBlock, "fields.toml");
+  Simulation sim(scene);
+  write_checkpoint_file(dir_ / "c.bin", sim, scene_hash(scene), RunLoopState{});
+  const std::string bytes = text_of(dir_ / "c.bin");
+  ASSERT_NO_THROW(decode_checkpoint(without_section(bytes, "no such section"), "resealed"));
+  for_each_particle_field([&](const auto& f) {
+    if (!f.info.has(kCheckpoint)) return;
+    const std::string field(f.info.name);
+    try {
+      decode_checkpoint(without_section(bytes, "particles." + field), "old.bin");
+      ADD_FAILURE() << "a checkpoint without " << field << " was accepted";
+    } catch (const CheckpointError& e) {
+      EXPECT_NE(std::string(e.what()).find("no particle field '" + field + "'"), std::string::npos) << e.what();
+    }
   });
 }
 
