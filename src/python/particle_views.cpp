@@ -42,30 +42,10 @@ struct ElementLayout<PlaneStrainTensor> {  // xx, yy, zz, xy (core/tensor.hpp)
 static_assert(sizeof(Vec2) == 2 * sizeof(double) && sizeof(Mat2) == 4 * sizeof(double) &&
               sizeof(PlaneStrainTensor) == 4 * sizeof(double));
 
-// fn(name, array) for every particle field, in the order of core/particles.hpp. (When the particle
-// field registry lands, this list comes from it.)
+// fn(name, array) for every particle field, in the order of the registry (core/particle_fields.hpp).
 template <class Fn>
 void for_each_field(const Particles& p, Fn&& fn) {
-  fn("position", p.position);
-  fn("velocity", p.velocity);
-  fn("velocity_gradient", p.velocity_gradient);
-  fn("deformation_gradient", p.deformation_gradient);
-  fn("mass", p.mass);
-  fn("volume", p.volume);
-  fn("initial_volume", p.initial_volume);
-  fn("stress", p.stress);
-  fn("effective_stress", p.effective_stress);
-  fn("plastic_strain", p.plastic_strain);
-  fn("plastic_strain_rate", p.plastic_strain_rate);
-  fn("temperature", p.temperature);
-  fn("damage_initiation", p.damage_initiation);
-  fn("damage", p.damage);
-  fn("plastic_displacement", p.plastic_displacement);
-  fn("initiation_yield_stress", p.initiation_yield_stress);
-  fn("fracture_energy", p.fracture_energy);
-  fn("damage_dissipation", p.damage_dissipation);
-  fn("body", p.body);
-  fn("material", p.material);
+  for_each_particle_field([&](const auto& f) { fn(std::string(f.info.name), p.*f.array); });
 }
 
 // The base object of the views: keeps the Run alive; its death tells the Run that the views are gone.
@@ -79,7 +59,7 @@ void ParticleViews::bind(py::module_& m) { py::class_<ViewGuard>(m, "_ParticleVi
 
 std::vector<std::string> ParticleViews::names() {
   std::vector<std::string> out;
-  for_each_field(Particles{}, [&](const char* name, const auto&) { out.push_back(name); });
+  for_each_field(Particles{}, [&](const std::string& name, const auto&) { out.push_back(name); });
   return out;
 }
 
@@ -88,7 +68,7 @@ py::dict ParticleViews::views(const Particles& particles, py::handle owner) {
   guard_ = py::module_::import("weakref").attr("ref")(guard);
   py::dict out;
   const py::ssize_t n = static_cast<py::ssize_t>(particles.size());
-  for_each_field(particles, [&](const char* name, const auto& array) {
+  for_each_field(particles, [&](const std::string& name, const auto& array) {
     using T = typename std::decay_t<decltype(array)>::value_type;
     using Layout = ElementLayout<T>;
     std::vector<py::ssize_t> shape{n}, strides{static_cast<py::ssize_t>(sizeof(T))};
@@ -96,7 +76,7 @@ py::dict ParticleViews::views(const Particles& particles, py::handle owner) {
     for (py::ssize_t s : Layout::strides()) strides.push_back(s);
     py::array a(py::dtype::of<typename Layout::Number>(), shape, strides, array.data(), guard);
     a.attr("setflags")(py::arg("write") = false);
-    out[name] = a;
+    out[py::str(name)] = a;
   });
   return out;
 }

@@ -18,7 +18,7 @@
 #include "core/particles.hpp"
 #include "core/simulation.hpp"
 #include "io/checkpoint.hpp"
-#include "io/scene_parser.hpp"
+#include "run/case_loading.hpp"
 #include "io/vtu_field_layout.hpp"
 #include "io/vtu_reader.hpp"
 #include "io/vtu_writer.hpp"
