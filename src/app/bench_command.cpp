@@ -15,7 +15,7 @@
 
 #include <fmt/format.h>
 
-#include "core/simulation.hpp"
+#include "solver/simulation.hpp"
 #include "core/thread_tuner.hpp"
 #include "io/material_library.hpp"
 #include "run/case_loading.hpp"

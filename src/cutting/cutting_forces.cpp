@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/simulation.hpp"
+#include "solver/simulation.hpp"
 #include "cutting/cutting_scene.hpp"
 
 namespace mpmcut {

@@ -25,7 +25,7 @@
 
 #include "core/particles.hpp"
 #include "core/scene.hpp"
-#include "core/simulation.hpp"
+#include "solver/simulation.hpp"
 #include "io/pvd_writer.hpp"
 
 namespace mpmcut {

@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "core/simulation.hpp"
+#include "solver/simulation.hpp"
 #include "core/thread_tuner.hpp"
 #include "io/checkpoint.hpp"
 #include "io/progress.hpp"

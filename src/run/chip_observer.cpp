@@ -6,7 +6,7 @@
 
 #include "analysis/chip_analysis.hpp"
 #include "analysis/fracture_accounting.hpp"
-#include "core/simulation.hpp"
+#include "solver/simulation.hpp"
 
 namespace mpmcut {
 

@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/simulation.hpp"
+#include "solver/simulation.hpp"
 
 namespace mpmcut {
 

@@ -5,7 +5,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "core/simulation.hpp"
+#include "solver/simulation.hpp"
 #include "io/vtu_writer.hpp"
 #include "run/scene_observers.hpp"
 

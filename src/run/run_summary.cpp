@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "core/simulation.hpp"
+#include "solver/simulation.hpp"
 #include "run/mass_scaling_report.hpp"
 
 namespace mpmcut {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/simulation.hpp"
+#include "solver/simulation.hpp"
 
 namespace mpmcut {
 

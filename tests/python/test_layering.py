@@ -19,9 +19,6 @@ INCLUDE = re.compile(r'^\s*#\s*include\s+"([a-z_]+)/', re.MULTILINE)
 # (file, the layer it includes): crossings to remove (issue 13), not to add to.
 KNOWN = {
     ("src/core/scene.hpp", "cutting"),          # the scene carries the cutting process it was built from
-    ("src/core/simulation.hpp", "contact"),     # the step lives in core; it belongs in solver/
-    ("src/core/simulation.cpp", "contact"),
-    ("src/core/simulation.hpp", "physics"),
     ("src/core/run_estimate.cpp", "io"),
 }
 

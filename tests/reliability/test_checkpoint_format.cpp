@@ -10,7 +10,7 @@
 #include <sstream>
 
 #include "run/run_case.hpp"
-#include "core/simulation.hpp"
+#include "solver/simulation.hpp"
 #include "io/checkpoint.hpp"
 #include "io/input_error.hpp"
 #include "run/case_loading.hpp"

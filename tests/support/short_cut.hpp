@@ -8,7 +8,7 @@
 
 #include "analysis/chip_analysis.hpp"
 #include "contact/rigid_polygon.hpp"
-#include "core/simulation.hpp"
+#include "solver/simulation.hpp"
 #include "cutting/cutting_scene.hpp"
 #include "io/material_library.hpp"
 

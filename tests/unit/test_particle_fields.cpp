@@ -16,7 +16,7 @@
 #include <type_traits>
 
 #include "core/particles.hpp"
-#include "core/simulation.hpp"
+#include "solver/simulation.hpp"
 #include "io/checkpoint.hpp"
 #include "run/case_loading.hpp"
 #include "io/vtu_field_layout.hpp"

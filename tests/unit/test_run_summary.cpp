@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/simulation.hpp"
+#include "solver/simulation.hpp"
 #include "run/case_loading.hpp"
 #include "run/run_summary.hpp"
 

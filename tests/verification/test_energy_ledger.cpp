@@ -8,7 +8,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/simulation.hpp"
+#include "solver/simulation.hpp"
 #include "run/case_loading.hpp"
 
 namespace mpmcut {

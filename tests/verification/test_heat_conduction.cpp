@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "../support/scene_builders.hpp"
-#include "core/simulation.hpp"
+#include "solver/simulation.hpp"
 
 using namespace mpmcut;
 using namespace mpmcut::testing;

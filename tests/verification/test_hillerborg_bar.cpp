@@ -30,7 +30,7 @@
 
 #include "../support/scene_builders.hpp"
 #include "analysis/fracture_accounting.hpp"
-#include "core/simulation.hpp"
+#include "solver/simulation.hpp"
 
 using namespace mpmcut;
 using namespace mpmcut::testing;

@@ -7,7 +7,7 @@
 
 #include "../support/scene_builders.hpp"
 #include "../support/ti64_parameters.hpp"
-#include "core/simulation.hpp"
+#include "solver/simulation.hpp"
 
 using namespace mpmcut;
 using namespace mpmcut::testing;

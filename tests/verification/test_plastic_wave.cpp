@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "../support/scene_builders.hpp"
-#include "core/simulation.hpp"
+#include "solver/simulation.hpp"
 
 using namespace mpmcut;
 using namespace mpmcut::testing;

@@ -1,7 +1,7 @@
 // The explicit MPM step (Sulsky 1994 USL / Sulsky, Zhou & Schreyer 1995 MUSL) with uGIMP or
 // linear shape functions, multi-velocity-field rigid contact with Coulomb friction and grid
 // heat conduction. step() reads like the algorithm; each stage is one function below.
-#include "core/simulation.hpp"
+#include "solver/simulation.hpp"
 
 #include "contact/contact_law.hpp"
 
