@@ -44,6 +44,25 @@ struct RigidLayout {
 };
 static_assert(sizeof(RigidBodyState) == sizeof(RigidLayout),
               "RigidBodyState gained or lost a field: update the rigid-body section in io/checkpoint.cpp");
+struct RestartLayout {
+  double a;
+  long b;
+  double c;
+  std::vector<RigidBodyState> d;
+  EnergyTotals e;
+  long f;
+  double g;
+  ConductionSubcycle h;
+};
+static_assert(sizeof(RestartState) == sizeof(RestartLayout),
+              "RestartState gained or lost a field: update write_checkpoint_file() and decode_checkpoint() in "
+              "io/checkpoint.cpp and bump kCheckpointFormatVersion");
+struct ConductionLayout {
+  double a;
+  int b;
+};
+static_assert(sizeof(ConductionSubcycle) == sizeof(ConductionLayout),
+              "ConductionSubcycle gained or lost a field: update the conduction section in io/checkpoint.cpp");
 static_assert(sizeof(Vec2) == 2 * sizeof(double) && sizeof(Mat2) == 4 * sizeof(double) &&
               sizeof(PlaneStrainTensor) == 4 * sizeof(double));
 
@@ -247,10 +266,11 @@ void write_checkpoint_file(const fs::path& file, const Simulation& sim, std::uin
   meta.f64(loop.checkpoint_value);
   w.section("meta", meta);
 
+  const RestartState& state = sim.restart_state();
   Bytes clock;
-  clock.f64(sim.time());
-  clock.i64(sim.step_count());
-  clock.f64(sim.last_dt());
+  clock.f64(state.time);
+  clock.i64(state.step);
+  clock.f64(state.last_dt);
   w.section("clock", clock);
 
   const Particles& P = sim.particles();
@@ -264,8 +284,8 @@ void write_checkpoint_file(const fs::path& file, const Simulation& sim, std::uin
   });
 
   Bytes rigid;
-  rigid.u64(sim.rigid_bodies().size());
-  for (const RigidBodyState& r : sim.rigid_bodies()) {
+  rigid.u64(state.rigid_bodies.size());
+  for (const RigidBodyState& r : state.rigid_bodies) {
     rigid.str(r.name);
     rigid.vec(r.velocity);
     rigid.vec(r.displacement);
@@ -277,15 +297,14 @@ void write_checkpoint_file(const fs::path& file, const Simulation& sim, std::uin
   w.section("rigid_bodies", rigid);
 
   Bytes energy;
-  for (const double* e : energy_fields(sim.energy())) energy.f64(*e);
-  energy.i64(sim.removed_particles());
-  energy.f64(sim.removed_mass());
+  for (const double* e : energy_fields(state.energy)) energy.f64(*e);
+  energy.i64(state.removed_particles);
+  energy.f64(state.removed_mass);
   w.section("energy", energy);
 
   Bytes conduction;
-  const auto [elapsed, steps] = sim.conduction_state();
-  conduction.f64(elapsed);
-  conduction.i64(steps);
+  conduction.f64(state.conduction.elapsed);
+  conduction.i64(state.conduction.steps);
   w.section("conduction", conduction);
 
   Bytes run;
@@ -376,9 +395,9 @@ Checkpoint decode_checkpoint(std::string_view bytes, const std::string& name) {
   }
   {
     Reader r = section("clock");
-    c.time_s = r.f64();
-    c.step = r.i64();
-    c.last_dt_s = r.f64();
+    c.state.time = r.f64();
+    c.state.step = r.i64();
+    c.state.last_dt = r.f64();
     finish(r);
   }
   {
@@ -419,21 +438,21 @@ Checkpoint decode_checkpoint(std::string_view bytes, const std::string& name) {
       s.impulse = r.vec();
       s.step_impulse = r.vec();
       s.work = r.f64();
-      c.rigid_bodies.push_back(s);
+      c.state.rigid_bodies.push_back(s);
     }
     finish(r);
   }
   {
     Reader r = section("energy");
-    for (double* e : energy_fields(c.energy)) *e = r.f64();
-    c.removed_particles = r.i64();
-    c.removed_mass = r.f64();
+    for (double* e : energy_fields(c.state.energy)) *e = r.f64();
+    c.state.removed_particles = r.i64();
+    c.state.removed_mass = r.f64();
     finish(r);
   }
   {
     Reader r = section("conduction");
-    c.conduction_elapsed_s = r.f64();
-    c.steps_since_conduction = static_cast<int>(r.i64());
+    c.state.conduction.elapsed = r.f64();
+    c.state.conduction.steps = static_cast<int>(r.i64());
     finish(r);
   }
   {
@@ -473,8 +492,9 @@ Checkpoint read_checkpoint_file(const fs::path& file) {
 }
 
 void Checkpoint::restore(Simulation& sim) && {
-  const std::string where = fmt::format("checkpoint at step {}", step);
+  const std::string where = fmt::format("checkpoint at step {}", state.step);
   const Scene& scene = sim.scene();
+  const std::vector<RigidBodyState>& rigid_bodies = state.rigid_bodies;
   if (rigid_bodies.size() != sim.rigid_bodies().size())
     throw CheckpointError(fmt::format("{} has {} rigid bodies, the scene {}", where, rigid_bodies.size(),
                                       sim.rigid_bodies().size()));
@@ -497,12 +517,7 @@ void Checkpoint::restore(Simulation& sim) && {
                                         particles.body[p], particles.material[p]));
   }
   sim.particles() = std::move(particles);
-  sim.rigid_bodies() = std::move(rigid_bodies);
-  sim.energy() = energy;
-  sim.set_clock(time_s, step);
-  sim.set_last_dt(last_dt_s);
-  sim.set_removed(removed_particles, removed_mass);
-  sim.set_conduction_state(conduction_elapsed_s, steps_since_conduction);
+  sim.restore(state);
 }
 
 // ---------------------------------------------------------------------------------------------

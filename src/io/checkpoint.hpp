@@ -3,9 +3,9 @@
 // (SIGINT/SIGTERM, SIGKILL, a crash, a full disk). docs/reliability.md describes the format
 // and the guarantees; this header is the one place that reads and writes it.
 //
-// A checkpoint holds the complete simulation state (every particle array, clock, last dt,
-// rigid-body states, energy totals, removed-particle counters, the conduction sub-cycle
-// state), the run loop's state (next
+// A checkpoint holds the complete simulation state (every particle array and the solver's
+// RestartState: clock, last dt, rigid-body states, energy totals, removed-particle counters, the
+// conduction sub-cycle state), the run loop's state (next
 // output times, snapshot counter, the PVD entries, byte lengths of the CSV files at that
 // moment, each observer's own state) and a hash of the expanded scene, so that a directory
 // whose scene.toml was changed is refused.
@@ -25,6 +25,7 @@
 
 #include "core/particles.hpp"
 #include "core/scene.hpp"
+#include "solver/restart_state.hpp"
 #include "solver/simulation.hpp"
 #include "io/pvd_writer.hpp"
 
@@ -64,16 +65,8 @@ struct RunLoopState {
 // A decoded checkpoint: the simulation state as plain data plus the run loop's state.
 struct Checkpoint {
   std::uint64_t scene_hash = 0;
-  double time_s = 0.0;
-  long step = 0;
-  double last_dt_s = 0.0;
+  RestartState state;  // clock, rigid bodies, energies, removed particles, conduction sub-cycle
   Particles particles;
-  std::vector<RigidBodyState> rigid_bodies;
-  EnergyTotals energy;
-  long removed_particles = 0;
-  double removed_mass = 0.0;  // kg per m
-  double conduction_elapsed_s = 0.0;  // conduction sub-cycle: time since its last update
-  int steps_since_conduction = 0;     //   and steps since
   RunLoopState loop;
 
   // Puts the simulation state into `sim`, which must have been built from the same scene

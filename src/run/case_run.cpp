@@ -52,7 +52,7 @@ void CaseRun::start() {
 void CaseRun::resume(Checkpoint&& c, const fs::path& file) {
   cut_back_outputs(c.loop);
   const RunLoopState loop = c.loop;
-  const long step = c.step;
+  const long step = c.state.step;
   std::move(c).restore(sim_);
   out_.emplace(root_, sim_, true);
   out_->restore(loop);

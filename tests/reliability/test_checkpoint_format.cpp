@@ -107,7 +107,7 @@ TEST_F(CheckpointFormat, RestoredSimulationContinuesBitIdentically) {
   loop.case_file = "case.toml";
   write_checkpoint_file(file_, straight, scene_hash(scene_), loop);
   Checkpoint c = read_checkpoint_file(file_);
-  EXPECT_EQ(c.step, 23);
+  EXPECT_EQ(c.state.step, 23);
   EXPECT_EQ(c.scene_hash, scene_hash(scene_));
   EXPECT_EQ(c.loop.snapshot_count, 3);
   EXPECT_EQ(c.loop.next_snapshot_s, 1.25e-7);

@@ -1,0 +1,208 @@
+#include "contact/rigid_contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/stencil.hpp"
+
+namespace mpmcut {
+
+RigidContact::RigidContact(const std::vector<RigidBodySpec>& bodies, const RigidContactSettings& settings)
+    : settings_(settings) {
+  for (const RigidBodySpec& r : bodies) {
+    geometry_.emplace_back(r.polygon, r.rounding_radius);
+    friction_.push_back(r.friction);
+    has_friction_ = has_friction_ || r.friction > 0.0;
+  }
+}
+
+void RigidContact::begin_step(std::vector<RigidBodyState>& bodies) {
+  for (auto& r : bodies) r.step_impulse = Vec2::Zero();
+  records_.clear();
+  heated_ = NodeBox{};
+}
+
+// Contact detected from the particles rather than the nodes: a particle is in contact with a rigid
+// body when its uGIMP domain reaches the surface (signed distance of its centre d <= lp), fading
+// linearly to out of contact at d = lp + contact_distance. A node's contact weight is the share of
+// its mass carried by particles in contact, sum S m phi / sum S m, and its normal is the
+// mass-weighted mean of their exact surface normals. Both move smoothly with the rigid body across
+// the grid, instead of switching when the tool crosses a node line.
+void RigidContact::compute_particle_weights(const Particles& P, const Grid& G, std::span<const ShapeFunction> body_shapes,
+                                            double inertia_factor, const std::vector<RigidBodyState>& bodies) {
+  const std::size_t nn = G.node_count();
+  weight_.resize(geometry_.size());
+  normal_.resize(geometry_.size());
+  const double band = settings_.contact_distance;
+  for (std::size_t r = 0; r < geometry_.size(); ++r) {
+    std::vector<double>& W = weight_[r];
+    std::vector<Vec2>& N = normal_[r];
+    W.assign(nn, 0.0);
+    N.assign(nn, Vec2::Zero());
+    const RigidPolygon& geom = geometry_[r];
+    const Vec2 shift = bodies[r].displacement;
+    const Vec2 lo = geom.lower() + shift - Vec2::Constant(2.0 * G.h), hi = geom.upper() + shift + Vec2::Constant(2.0 * G.h);
+    for (std::size_t p = 0; p < P.size(); ++p) {
+      const Vec2 x = P.position[p];
+      if (x.x() < lo.x() || x.x() > hi.x() || x.y() < lo.y() || x.y() > hi.y()) continue;
+      Vec2 normal;
+      const ShapeFunction& shape = body_shapes[P.body[p]];
+      const double lp = shape.half_width();
+      const double d = geom.signed_distance(x - shift, normal);
+      const double phi = band > 0.0 ? std::clamp(1.0 - (d - lp) / band, 0.0, 1.0) : (d <= lp ? 1.0 : 0.0);
+      if (phi <= 0.0) continue;
+      const double m = inertia_factor * P.mass[p];  // as the grid mass it is compared with
+      for_each_stencil_node(G, stencil_at(G, shape, x), [&](int n, double w, const Vec2&) {
+        if (w == 0.0) return;
+        W[n] += w * m * phi;
+        N[n] += (w * m * phi) * normal;
+      });
+    }
+  }
+}
+
+// The rigid body has infinite mass, so at a contact node only the material's velocity changes.
+// Contact holds where the material approaches the rigid surface and its mean position at the node
+// lies within contact_distance of it (no one-cell gap), or, with particle detection, on the node's
+// contact weight. The normal is the exact outward normal of the rigid outline. Normal approach is
+// removed; the tangential slip is reduced by at most mu times the normal change (Coulomb
+// stick/slip). Nodes with velocity boundary conditions are never changed.
+void RigidContact::apply(ContactPass pass, double dt, Grid& G, std::vector<RigidBodyState>& bodies,
+                         EnergyTotals& energy) {
+  if (geometry_.empty()) return;
+  std::vector<Vec2>& v = pass == ContactPass::AfterP2G ? G.velocity : G.velocity_new;
+  const bool accumulate_force = pass != ContactPass::MuslRemap;
+  if (pass == ContactPass::AfterUpdate) std::fill(G.in_contact.begin(), G.in_contact.end(), 0);
+  const double cutoff = settings_.contact_distance;
+  for (std::size_t r = 0; r < geometry_.size(); ++r) {
+    const RigidPolygon& geom = geometry_[r];
+    const Vec2 shift = bodies[r].displacement;
+    const Vec2 vr = bodies[r].velocity;
+    const double mu = friction_[r];
+    // Only nodes near the rigid body's bounding box can be in contact.
+    const Vec2 lo = (geom.lower() + shift - G.origin) / G.h - Vec2::Constant(2.0);
+    const Vec2 hi = (geom.upper() + shift - G.origin) / G.h + Vec2::Constant(2.0);
+    const int i0 = std::max(0, static_cast<int>(std::floor(lo.x())));
+    const int i1 = std::min(G.nx - 1, static_cast<int>(std::ceil(hi.x())));
+    const int j0 = std::max(0, static_cast<int>(std::floor(lo.y())));
+    const int j1 = std::min(G.ny - 1, static_cast<int>(std::ceil(hi.y())));
+    Vec2 impulse = Vec2::Zero();
+    double work = 0.0, friction_work = 0.0;
+    // Nodes in a fixed order: deterministic sums.
+    for (int j = j0; j <= j1; ++j) {
+      for (int i = i0; i <= i1; ++i) {
+        const int n = G.index(i, j);
+        const double m = G.mass[n];
+        if (m <= settings_.node_mass_cutoff || (G.fixed[n] & 3)) continue;  // never change BC nodes
+        const Vec2 xbar = G.mass_position[n] / m;
+        Vec2 normal;
+        double weight = 1.0;
+        if (settings_.particle_detection) {
+          weight = std::min(1.0, weight_[r][n] / m);
+          if (weight <= 0.0) continue;
+          const double nn = normal_[r][n].norm();
+          if (nn <= 0.0) continue;
+          normal = normal_[r][n] / nn;
+        } else {
+          const double dist = geom.signed_distance(xbar - shift, normal);
+          if (dist > cutoff) continue;
+        }
+        const Vec2 rel = v[n] - vr;
+        const double vn = rel.dot(normal);
+        if (pass == ContactPass::MuslRemap) {
+          // Only where the momentum update found contact, and there whatever the sign: the
+          // strain update must see the same constraint that moved the particles (an approach
+          // test here lets the strain velocity disagree with the motion and creates energy).
+          if (!G.in_contact[n]) continue;
+        } else if (vn >= 0.0) {
+          continue;  // separating
+        }
+        if (pass == ContactPass::AfterUpdate) G.in_contact[n] = 1;
+        const ContactCorrection cc = coulomb_rigid_correction(rel, normal, mu, weight);
+        const Vec2& new_rel = cc.new_relative;
+        const Vec2 dv = new_rel - rel;
+        v[n] = vr + new_rel;
+        if (accumulate_force) {
+          const Vec2 dp = m * dv;  // momentum given to the material by the rigid body
+          impulse += dp;
+          records_.push_back({static_cast<int>(r), pass == ContactPass::AfterP2G ? 0 : 1, xbar, normal, dp, cc.sliding});
+          work += dp.dot(vr);
+          // Frictional work = friction impulse x the slip that goes on (Coulomb force times slip
+          // distance); sticking does no frictional work. It becomes heat in the deformable body at
+          // this node (a rigid tool takes none). The rest of the kinetic energy the correction
+          // removes at the node is the velocity jump of imposing contact on the grid; with FLIP
+          // it is not lost by the particles, so it is not counted as a dissipation (counting it
+          // overstated friction heat and broke the energy balance of a cut by ~15%).
+          const double q = m * cc.friction_dv * cc.slip_after;
+          friction_work += q;
+          G.friction_heat[n] += q;
+          if (q > 0.0) heated_.add(i, j);
+        }
+      }
+    }
+    if (accumulate_force) {
+      bodies[r].step_impulse -= impulse;
+      bodies[r].force = bodies[r].step_impulse / dt;
+      bodies[r].impulse -= impulse;
+      bodies[r].work += work;
+      energy.external_work += work;
+      energy.friction += friction_work;
+    }
+  }
+}
+
+// Possible at a sharp edge, where neighbouring nodes have different normals. The momentum the
+// safeguard takes counts as contact impulse on the rigid body, like the grid corrections.
+void RigidContact::push_particles_out(Particles& P, std::vector<Vec2>& position_new, double dt, double inertia_factor,
+                                      double cell_size, bool parallel, std::vector<RigidBodyState>& bodies,
+                                      EnergyTotals& energy) {
+  const std::size_t n = P.size();
+  for (std::size_t r = 0; r < geometry_.size(); ++r) {
+    const RigidPolygon& geom = geometry_[r];
+    const Vec2 shift = bodies[r].displacement + dt * bodies[r].velocity;  // where it is at the end of the step
+    const Vec2 lo = geom.lower() + shift, hi = geom.upper() + shift;
+    const Vec2 vr = bodies[r].velocity;
+    std::vector<std::size_t> inside;
+#pragma omp parallel if (parallel)
+    {
+      std::vector<std::size_t> mine;
+#pragma omp for schedule(static) nowait
+      for (std::size_t p = 0; p < n; ++p) {
+        const Vec2 x = position_new[p];
+        if (x.x() < lo.x() || x.x() > hi.x() || x.y() < lo.y() || x.y() > hi.y()) continue;
+        Vec2 normal;
+        if (geom.signed_distance(x - shift, normal) < 0.0) mine.push_back(p);
+      }
+#pragma omp critical
+      inside.insert(inside.end(), mine.begin(), mine.end());
+    }
+    std::sort(inside.begin(), inside.end());  // fixed order: deterministic sums
+    Vec2 impulse = Vec2::Zero();
+    double work = 0.0, lost = 0.0;
+    for (std::size_t p : inside) {
+      Vec2 normal;
+      const double d = geom.signed_distance(position_new[p] - shift, normal);
+      position_new[p] -= (d - 1e-9 * cell_size) * normal;  // onto the surface, a hair outside
+      const double vn = (P.velocity[p] - vr).dot(normal);
+      if (vn < 0.0) {
+        const Vec2 dp = -inertia_factor * P.mass[p] * vn * normal;
+        P.velocity[p] -= vn * normal;
+        impulse += dp;
+        records_.push_back({static_cast<int>(r), 2, position_new[p], normal, dp, false});
+        work += dp.dot(vr);
+        // Removing the approach velocity relative to the body is a perfectly inelastic impact:
+        // the particle's kinetic energy changes by dp.vr - m vn^2 / 2, so m vn^2 / 2 is lost.
+        lost += 0.5 * inertia_factor * P.mass[p] * vn * vn;
+      }
+      ++pushed_out_;
+    }
+    bodies[r].step_impulse -= impulse;
+    bodies[r].force = bodies[r].step_impulse / dt;
+    bodies[r].impulse -= impulse;
+    bodies[r].work += work;
+    energy.external_work += work;
+    energy.contact_safeguard += lost;
+  }
+}
+
+}  // namespace mpmcut

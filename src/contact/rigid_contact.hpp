@@ -1,0 +1,93 @@
+#pragma once
+// Multi-velocity-field contact between the deformable material on the grid and rigid bodies
+// (Bardenhagen et al. 2000; Nairn's rigid form): the nodal Coulomb law of contact_law.hpp applied
+// at the nodes near each rigid body, the impulse and work it exchanges with each body, the
+// frictional work it leaves on the nodes (frictional_heating.hpp turns it into heat), a record of
+// what it did, and the particle push-out safeguard behind it. docs/cutting.md, "Contact".
+#include <cstddef>
+#include <limits>
+#include <span>
+#include <vector>
+
+#include "contact/contact_law.hpp"
+#include "contact/rigid_body.hpp"
+#include "contact/rigid_polygon.hpp"
+#include "core/energy_totals.hpp"
+#include "core/grid.hpp"
+#include "core/particles.hpp"
+#include "core/scene.hpp"
+#include "core/shape_functions.hpp"
+
+namespace mpmcut {
+
+// When in the step the nodal law acts: on the P2G velocity (grid.velocity), on the velocity after
+// the momentum update (grid.velocity_new), and on the MUSL re-mapped velocity (grid.velocity_new).
+enum class ContactPass { AfterP2G, AfterUpdate, MuslRemap };
+
+// A box of grid nodes in node indices (empty while lo > hi).
+struct NodeBox {
+  Vec2 lo = Vec2::Constant(std::numeric_limits<double>::max());
+  Vec2 hi = Vec2::Constant(-std::numeric_limits<double>::max());
+  bool empty() const { return lo.x() > hi.x(); }
+  void add(int i, int j) {
+    lo = lo.cwiseMin(Vec2(i, j));
+    hi = hi.cwiseMax(Vec2(i, j));
+  }
+};
+
+struct RigidContactSettings {
+  double contact_distance = 0.0;    // m: a node's material within this of the surface can be in contact
+  bool particle_detection = false;  // contact weights from the particles (ContactDetection::Particle)
+  double node_mass_cutoff = 0.0;    // kg/m: lighter nodes count as empty
+};
+
+class RigidContact {
+ public:
+  RigidContact() = default;
+  RigidContact(const std::vector<RigidBodySpec>& bodies, const RigidContactSettings& settings);
+
+  bool empty() const { return geometry_.empty(); }
+  bool has_friction() const { return has_friction_; }
+  // Body r's outline at t = 0; at time t it is displaced by its state's displacement.
+  const RigidPolygon& geometry(std::size_t r) const { return geometry_[r]; }
+
+  // Start of a step: zero each body's step impulse, forget the last step's records and heated nodes.
+  void begin_step(std::vector<RigidBodyState>& bodies);
+
+  // Particle detection (before the first pass): each node's contact weight, the share of its mass
+  // carried by particles in contact, and their mean surface normal.
+  void compute_particle_weights(const Particles& particles, const Grid& grid, std::span<const ShapeFunction> body_shapes,
+                                double inertia_factor, const std::vector<RigidBodyState>& bodies);
+
+  // One pass of the nodal law on the pass's grid velocity. The passes after P2G and after the
+  // momentum update (whose corrections reach the particles) record the impulse on each body, its
+  // work and the frictional work (on grid.friction_heat); the step's force is both passes' impulses
+  // (and the safeguard's) over dt.
+  void apply(ContactPass pass, double dt, Grid& grid, std::vector<RigidBodyState>& bodies, EnergyTotals& energy);
+
+  // The safeguard behind the grid contact, after G2P: a particle whose new position lies inside a
+  // rigid body is put back on its surface and its approach velocity removed.
+  void push_particles_out(Particles& particles, std::vector<Vec2>& position_new, double dt, double inertia_factor,
+                          double cell_size, bool parallel, std::vector<RigidBodyState>& bodies, EnergyTotals& energy);
+
+  // What the contact did this step: one record per contact node and pass, and per particle the
+  // safeguard moved. Diagnostics, not restart state.
+  const std::vector<ContactRecord>& records() const { return records_; }
+  // Nodes with frictional work this step (grid.friction_heat > 0 only inside).
+  const NodeBox& heated_nodes() const { return heated_; }
+  // Particle corrections by the safeguard since the start (diagnostics, not restart state).
+  long pushed_out_particles() const { return pushed_out_; }
+
+ private:
+  std::vector<RigidPolygon> geometry_;  // outlines at t = 0; current = outline + displacement
+  std::vector<double> friction_;        // Coulomb coefficient per body
+  bool has_friction_ = false;
+  RigidContactSettings settings_;
+  std::vector<std::vector<double>> weight_;  // particle detection: per body, per node: sum S m phi, kg/m
+  std::vector<std::vector<Vec2>> normal_;    // per body, per node: sum S m phi n
+  std::vector<ContactRecord> records_;
+  NodeBox heated_;
+  long pushed_out_ = 0;
+};
+
+}  // namespace mpmcut

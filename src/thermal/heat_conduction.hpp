@@ -1,0 +1,57 @@
+#pragma once
+// Explicit heat conduction on the grid (Nairn's transport task structure), sub-cycled: its
+// explicit limit h^2/(4 alpha) is thousands of mechanical steps for metals, so it runs once per
+// kSubsteps mechanical steps (or sooner, before the limit is reached) over the time they covered.
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "core/grid.hpp"
+#include "core/particles.hpp"
+#include "core/scene.hpp"
+#include "core/shape_functions.hpp"
+#include "core/strip_colouring.hpp"
+
+namespace mpmcut {
+
+// Where the sub-cycle stands (restart state): mechanical time and steps since the last update.
+struct ConductionSubcycle {
+  double elapsed = 0.0;  // s
+  int steps = 0;
+};
+
+class SubcycledConduction {
+ public:
+  static constexpr int kSubsteps = 16;
+
+  SubcycledConduction() = default;
+  // enabled: the scene's thermal.conduction; the limit comes from the conducting materials.
+  SubcycledConduction(bool enabled, const std::vector<MaterialParameters>& materials, double cell_size, double cfl);
+
+  bool enabled() const { return enabled_; }
+  // Explicit conduction step limit cfl h^2/(4 alpha) over the materials (infinite if none conducts), s.
+  double time_step_limit() const { return limit_; }
+
+  // At the start of a step of dt: counts the step and says whether the step ends with a conduction
+  // update (P2G must then map the temperatures).
+  bool begin_step(ConductionSubcycle& s, double dt) const {
+    return enabled_ && (++s.steps >= kSubsteps || s.elapsed + 2 * dt > limit_);
+  }
+  // At the end of the step: adds dt to the elapsed time; when the update is due, returns the time
+  // to conduct over and starts a new sub-cycle.
+  std::optional<double> end_step(ConductionSubcycle& s, double dt, bool due) const;
+
+ private:
+  bool enabled_ = false;
+  double limit_ = 0.0;
+};
+
+// One explicit conduction update over dt: nodal temperatures (from P2G) and heat capacities, the
+// conductive nodal heat rate -sum V k gradS . gradT_p, fixed-temperature nodes, and temperature
+// increments (not values) back to the particles so the field is not smeared. `colouring` holds
+// this step's strips (particles not moved since P2G).
+void conduct_heat(Particles& particles, Grid& grid, std::span<const ShapeFunction> body_shapes,
+                  const std::vector<MaterialParameters>& materials, const StripColouring& colouring, bool parallel,
+                  double dt);
+
+}  // namespace mpmcut
