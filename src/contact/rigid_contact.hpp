@@ -1,6 +1,6 @@
 #pragma once
 // Multi-velocity-field contact between the deformable material on the grid and rigid bodies
-// (Bardenhagen et al. 2000; Nairn's rigid form): the nodal Coulomb law of contact_law.hpp applied
+// ([Bardenhagen2000]; the rigid form of [Nairn2013]): the nodal Coulomb law of contact_law.hpp applied
 // at the nodes near each rigid body, the impulse and work it exchanges with each body, the
 // frictional work it leaves on the nodes (frictional_heating.hpp turns it into heat), a record of
 // what it did, and the particle push-out safeguard behind it. docs/cutting.md, "Contact".

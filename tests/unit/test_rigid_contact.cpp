@@ -1,0 +1,101 @@
+// The rigid contact (contact/rigid_contact.hpp) on a hand-made grid, without the solver: at a node
+// whose material approaches a rigid plate the approach is removed and the slip reduced by mu times
+// the normal change (Coulomb), the impulse goes to the plate, the frictional work to the node; a
+// separating node is left alone; the MUSL pass acts exactly where the pass after the momentum
+// update found contact. docs/cutting.md, "Contact".
+#include <gtest/gtest.h>
+
+#include "contact/rigid_contact.hpp"
+
+using namespace mpmcut;
+
+namespace {
+
+constexpr double h = 1e-3;
+
+struct PlateFixture {
+  Grid grid;
+  RigidContact contact;
+  std::vector<RigidBodyState> bodies;
+  EnergyTotals energy;
+
+  explicit PlateFixture(double mu) {
+    GridSpec spec;
+    spec.cell_size = h;
+    spec.min = Vec2(0.0, 0.0);
+    spec.max = Vec2(20 * h, 20 * h);
+    grid.build(spec);
+    RigidBodySpec plate;  // top face at y = 5h, outward normal +y there
+    plate.name = "plate";
+    plate.polygon.vertices = {{2 * h, 2 * h}, {18 * h, 2 * h}, {18 * h, 5 * h}, {2 * h, 5 * h}};
+    plate.friction = mu;
+    RigidContactSettings settings;
+    settings.contact_distance = 0.5 * h;
+    contact = RigidContact({plate}, settings);
+    RigidBodyState s;
+    s.name = plate.name;
+    bodies.push_back(s);
+  }
+  // Material of mass m at node (i, j) whose mean position is `height` above the plate.
+  int put(int i, int j, double m, const Vec2& v, double height) {
+    const int n = grid.index(i, j);
+    grid.mass[n] = m;
+    grid.velocity[n] = v;
+    grid.velocity_new[n] = v;
+    grid.mass_position[n] = m * Vec2(grid.node_position(i, j).x(), 5 * h + height);
+    return n;
+  }
+};
+
+}  // namespace
+
+TEST(RigidContact, ApproachingNodeGetsCoulombCorrectionAndThePlateItsImpulse) {
+  PlateFixture f(0.3);
+  const double m = 2e-3, dt = 1e-8;
+  const int n = f.put(13, 9, m, Vec2(1.0, -2.0), 0.2 * h);
+  f.contact.begin_step(f.bodies);
+  f.contact.apply(ContactPass::AfterP2G, dt, f.grid, f.bodies, f.energy);
+  // Normal approach -2 removed; slip 1 reduced by mu * 2 = 0.6 (the Coulomb limit: sliding).
+  EXPECT_NEAR((f.grid.velocity[n] - Vec2(0.4, 0.0)).norm(), 0.0, 1e-15);
+  const Vec2 dp = m * (Vec2(0.4, 0.0) - Vec2(1.0, -2.0));
+  EXPECT_NEAR((f.bodies[0].step_impulse + dp).norm(), 0.0, 1e-18);
+  EXPECT_NEAR((f.bodies[0].force + dp / dt).norm(), 0.0, 1e-9);
+  ASSERT_EQ(f.contact.records().size(), 1u);
+  EXPECT_EQ(f.contact.records()[0].pass, 0);
+  EXPECT_TRUE(f.contact.records()[0].sliding);
+  // Frictional work = friction velocity change x continuing slip x m, on the node and in the ledger.
+  EXPECT_NEAR(f.grid.friction_heat[n], m * 0.6 * 0.4, 1e-18);
+  EXPECT_NEAR(f.energy.friction, m * 0.6 * 0.4, 1e-18);
+  EXPECT_FALSE(f.contact.heated_nodes().empty());
+  EXPECT_EQ(f.contact.heated_nodes().lo, Vec2(13, 9));
+}
+
+TEST(RigidContact, SeparatingOrDistantMaterialIsLeftAlone) {
+  PlateFixture f(0.3);
+  const int leaving = f.put(10, 9, 1e-3, Vec2(1.0, 0.5), 0.2 * h);
+  const int far = f.put(12, 11, 1e-3, Vec2(0.0, -1.0), 2.0 * h);  // beyond the contact distance
+  f.contact.begin_step(f.bodies);
+  f.contact.apply(ContactPass::AfterP2G, 1e-8, f.grid, f.bodies, f.energy);
+  EXPECT_EQ(f.grid.velocity[leaving], Vec2(1.0, 0.5));
+  EXPECT_EQ(f.grid.velocity[far], Vec2(0.0, -1.0));
+  EXPECT_TRUE(f.contact.records().empty());
+  EXPECT_EQ(f.bodies[0].step_impulse, Vec2::Zero());
+}
+
+TEST(RigidContact, MuslPassActsWhereTheUpdatePassFoundContactWhateverTheSign) {
+  PlateFixture f(0.0);
+  const int touched = f.put(13, 9, 1e-3, Vec2(0.0, -1.0), 0.2 * h);
+  const int other = f.put(11, 9, 1e-3, Vec2(0.0, 1.0), 0.2 * h);
+  f.contact.begin_step(f.bodies);
+  f.contact.apply(ContactPass::AfterUpdate, 1e-8, f.grid, f.bodies, f.energy);
+  EXPECT_EQ(f.grid.in_contact[touched], 1);
+  EXPECT_EQ(f.grid.in_contact[other], 0);
+  // The remapped velocity at the contact node now separates: still constrained (normal removed).
+  f.grid.velocity_new[touched] = Vec2(0.5, 0.7);
+  f.grid.velocity_new[other] = Vec2(0.0, -0.7);
+  const Vec2 impulse_before = f.bodies[0].impulse;
+  f.contact.apply(ContactPass::MuslRemap, 0.0, f.grid, f.bodies, f.energy);
+  EXPECT_NEAR((f.grid.velocity_new[touched] - Vec2(0.5, 0.0)).norm(), 0.0, 1e-15);
+  EXPECT_EQ(f.grid.velocity_new[other], Vec2(0.0, -0.7));  // approaching, but not found in contact
+  EXPECT_EQ(f.bodies[0].impulse, impulse_before);          // the MUSL pass exchanges no force
+}
