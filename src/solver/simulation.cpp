@@ -1,4 +1,4 @@
-// The explicit MPM step (Sulsky 1994 USL / Sulsky, Zhou & Schreyer 1995 MUSL) with uGIMP or
+// The explicit MPM step ([Sulsky1994] USL / [SulskyZhouSchreyer1995] MUSL) with uGIMP or
 // linear shape functions, multi-velocity-field rigid contact with Coulomb friction and grid
 // heat conduction. step() is the list of stages (docs/solver.md); each stage below is a few
 // lines that call the transfers, the grid update, the contact law, conduction or the materials.
@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include "contact/frictional_heating.hpp"
 #include "core/cell_order.hpp"

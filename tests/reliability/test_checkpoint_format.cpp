@@ -61,6 +61,9 @@ bool same_state(const Simulation& a, const Simulation& b) {
   });
   same = same && std::memcmp(&a.energy(), &b.energy(), sizeof(EnergyTotals)) == 0;
   same = same && a.time() == b.time() && a.step_count() == b.step_count() && a.last_dt() == b.last_dt();
+  const RestartState &sa = a.restart_state(), &sb = b.restart_state();
+  same = same && sa.conduction.elapsed == sb.conduction.elapsed && sa.conduction.steps == sb.conduction.steps &&
+         sa.removed_particles == sb.removed_particles && sa.removed_mass == sb.removed_mass;
   for (std::size_t r = 0; same && r < a.rigid_bodies().size(); ++r) {
     const RigidBodyState &s = a.rigid_bodies()[r], &t = b.rigid_bodies()[r];
     same = s.displacement == t.displacement && s.force == t.force && s.impulse == t.impulse &&
@@ -200,6 +203,22 @@ TEST_F(CheckpointFormat, RestoreRefusesAnotherScene) {
   no_punch.rigid_bodies.clear();
   Simulation sim(no_punch);
   EXPECT_THROW(read_checkpoint_file(file_).restore(sim), CheckpointError);
+}
+
+// The simulation itself refuses a restart state whose rigid bodies are not its scene's (it would
+// index its rigid geometry out of bounds).
+TEST_F(CheckpointFormat, SimulationRefusesARestartStateWithOtherRigidBodies) {
+  Scene no_punch = scene_;
+  no_punch.rigid_bodies.clear();
+  const RestartState without = Simulation(no_punch).restart_state();
+  Simulation sim(scene_);
+  EXPECT_THROW(sim.restore(without), std::invalid_argument);
+  RestartState later = sim.restart_state();
+  later.step = 7;
+  later.conduction.steps = 3;
+  sim.restore(later);
+  EXPECT_EQ(sim.step_count(), 7);
+  EXPECT_EQ(sim.restart_state().conduction.steps, 3);
 }
 
 TEST(CheckpointInterval, ParsesStepsAndWallTimes) {

@@ -49,7 +49,7 @@ struct PlateFixture {
 
 }  // namespace
 
-TEST(RigidContact, ApproachingNodeGetsCoulombCorrectionAndThePlateItsImpulse) {
+TEST(RigidContactPasses, ApproachingNodeGetsCoulombCorrectionAndThePlateItsImpulse) {
   PlateFixture f(0.3);
   const double m = 2e-3, dt = 1e-8;
   const int n = f.put(13, 9, m, Vec2(1.0, -2.0), 0.2 * h);
@@ -70,7 +70,7 @@ TEST(RigidContact, ApproachingNodeGetsCoulombCorrectionAndThePlateItsImpulse) {
   EXPECT_EQ(f.contact.heated_nodes().lo, Vec2(13, 9));
 }
 
-TEST(RigidContact, SeparatingOrDistantMaterialIsLeftAlone) {
+TEST(RigidContactPasses, SeparatingOrDistantMaterialIsLeftAlone) {
   PlateFixture f(0.3);
   const int leaving = f.put(10, 9, 1e-3, Vec2(1.0, 0.5), 0.2 * h);
   const int far = f.put(12, 11, 1e-3, Vec2(0.0, -1.0), 2.0 * h);  // beyond the contact distance
@@ -82,7 +82,7 @@ TEST(RigidContact, SeparatingOrDistantMaterialIsLeftAlone) {
   EXPECT_EQ(f.bodies[0].step_impulse, Vec2::Zero());
 }
 
-TEST(RigidContact, MuslPassActsWhereTheUpdatePassFoundContactWhateverTheSign) {
+TEST(RigidContactPasses, MuslPassActsWhereTheUpdatePassFoundContactWhateverTheSign) {
   PlateFixture f(0.0);
   const int touched = f.put(13, 9, 1e-3, Vec2(0.0, -1.0), 0.2 * h);
   const int other = f.put(11, 9, 1e-3, Vec2(0.0, 1.0), 0.2 * h);
