@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <string_view>
 
-#include "core/run_estimate.hpp"
+#include "io/run_estimate.hpp"
 #include "io/input_error.hpp"
 #include "run/case_loading.hpp"
 

@@ -15,7 +15,7 @@
 #include "analysis/chip_profile.hpp"
 #include "contact/rigid_polygon.hpp"
 #include "core/particles.hpp"
-#include "core/scene.hpp"
+#include "solver/scene.hpp"
 
 namespace mpmcut {
 

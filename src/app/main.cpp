@@ -12,10 +12,11 @@
 #include "app/plot_command.hpp"
 #include "app/sweep_command.hpp"
 #include "app/calibrate_command.hpp"
+#include "app/keys_command.hpp"
 #include "app/validate_command.hpp"
 #include "run/run_case.hpp"
 #include "app/stop_signal.hpp"
-#include "core/run_estimate.hpp"
+#include "io/run_estimate.hpp"
 #include "io/input_error.hpp"
 #include "run/case_loading.hpp"
 
@@ -103,6 +104,7 @@ int main(int argc, char** argv) {
   add_validate_command(app);
   add_calibrate_command(app);
   add_analyze_command(app);
+  add_keys_command(app);
 
   CLI11_PARSE(app, argc, argv);
 

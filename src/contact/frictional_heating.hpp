@@ -7,7 +7,7 @@
 #include "contact/rigid_contact.hpp"
 #include "core/grid.hpp"
 #include "core/particles.hpp"
-#include "core/scene.hpp"
+#include "solver/scene.hpp"
 #include "core/shape_functions.hpp"
 
 namespace mpmcut {

@@ -4,7 +4,7 @@
 // to the grown shape is the polygon's distance minus r, so a rounded cutting edge is exact.
 #include <vector>
 
-#include "core/scene.hpp"
+#include "core/scene_specs.hpp"
 #include "core/tensor.hpp"
 
 namespace mpmcut {

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/scene.hpp"
+#include "core/scene_specs.hpp"
 #include "core/tensor.hpp"
 
 namespace mpmcut {

@@ -4,7 +4,7 @@
 // 3x3 node stencil (linear uses 2x2 of it; the third weight is zero).
 #include <cmath>
 
-#include "core/scene.hpp"
+#include "core/scene_specs.hpp"
 #include "core/tensor.hpp"
 
 namespace mpmcut {

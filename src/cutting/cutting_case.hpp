@@ -5,7 +5,7 @@
 // run/case_loading.hpp dispatches between a [cutting] case and a generic one.
 #include <ostream>
 
-#include "core/scene.hpp"
+#include "solver/scene.hpp"
 #include "io/toml_reader.hpp"
 
 namespace mpmcut {

@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "core/scene.hpp"
+#include "solver/scene.hpp"
 
 namespace mpmcut {
 

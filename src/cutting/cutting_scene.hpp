@@ -2,7 +2,7 @@
 // The cutting preset: process parameters -> a general Scene (workpiece, tool, grid, boundary
 // conditions, outputs). The result is written next to the results as scene.toml, so a user
 // can see and edit exactly what ran.
-#include "core/scene.hpp"
+#include "solver/scene.hpp"
 #include "cutting/cutting_parameters.hpp"
 
 namespace mpmcut {

@@ -5,7 +5,7 @@
 // is the inertia of the material, measured by the inertia number rho f V^2 / sigma_ref (inertial
 // stress of the chip turning at speed V over the flow stress). Quasi-static cutting has
 // rho V^2 / sigma_ref << 1; keeping the scaled number small keeps the answer.
-#include "core/scene.hpp"
+#include "solver/scene.hpp"
 #include "cutting/cutting_parameters.hpp"
 
 namespace mpmcut {

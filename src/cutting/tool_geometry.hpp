@@ -1,7 +1,7 @@
 #pragma once
 // The cutting tool as a rigid body: a wedge with rake angle, clearance angle and a rounded
 // cutting edge of radius r, represented exactly as a core polygon grown by r.
-#include "core/scene.hpp"
+#include "solver/scene.hpp"
 #include "cutting/cutting_parameters.hpp"
 
 namespace mpmcut {

@@ -24,8 +24,8 @@
 #include <vector>
 
 #include "core/particles.hpp"
-#include "core/scene.hpp"
 #include "solver/restart_state.hpp"
+#include "solver/scene.hpp"
 #include "solver/simulation.hpp"
 #include "io/pvd_writer.hpp"
 

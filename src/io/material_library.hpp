@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-#include "core/scene.hpp"
+#include "solver/scene.hpp"
 #include "io/toml_reader.hpp"
 
 namespace mpmcut {
@@ -30,10 +30,8 @@ const MaterialLibrary& builtin_material_library();
 
 // Reads and validates one [[material]] table (case file or library file). With `library = "<set>"`
 // it starts from that set of `library` and every other key overrides; otherwise it is a full
-// definition. fracture_toughness K_IC is converted to fracture_energy G_f = K_IC^2 (1 - nu^2) / E.
+// definition. The keys and their rules are the physics models' parameter tables (io/material_keys.hpp);
+// fracture_toughness K_IC is converted to fracture_energy G_f = K_IC^2 (1 - nu^2) / E.
 MaterialParameters read_material(TableReader& table, const MaterialLibrary& library);
-
-// G_f = K_IC^2 (1 - nu^2) / E (plane strain, LEFM; Mabrouki et al. 2008), J/m^2.
-double fracture_energy_from_toughness(double toughness_Pa_sqrt_m, double youngs_modulus, double poisson_ratio);
 
 }  // namespace mpmcut

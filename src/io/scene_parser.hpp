@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-#include "core/scene.hpp"
+#include "solver/scene.hpp"
 #include "io/input_error.hpp"
 #include "io/toml_reader.hpp"
 

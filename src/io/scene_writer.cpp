@@ -1,5 +1,7 @@
 #include "io/scene_writer.hpp"
 
+#include "io/material_keys.hpp"
+
 #include <fmt/format.h>
 
 namespace mpmcut {
@@ -64,47 +66,10 @@ std::string shape_line(const Shape& s) {
 }  // namespace
 
 void write_material(const MaterialParameters& m, std::ostream& out) {
-  auto line = [&](const char* key, double value) { out << key << " = " << num(value) << "\n"; };
   out << "\n[[material]]\n";
   out << "name = " << str(m.name) << "\n";
   out << "citation = " << str(m.citation) << "\n";
-  out << "model = \"" << (m.model == MaterialModel::JohnsonCook ? "johnson_cook" : "elastic") << "\"\n";
-  line("density", m.density);
-  line("youngs_modulus", m.youngs_modulus);
-  line("poisson_ratio", m.poisson_ratio);
-  line("specific_heat", m.specific_heat);
-  line("thermal_conductivity", m.thermal_conductivity);
-  line("taylor_quinney", m.taylor_quinney);
-  line("room_temperature", m.room_temperature);
-  line("melting_temperature", m.melting_temperature);
-  line("jc_A", m.jc_A);
-  line("jc_B", m.jc_B);
-  line("jc_n", m.jc_n);
-  line("jc_C", m.jc_C);
-  line("jc_m", m.jc_m);
-  line("reference_strain_rate", m.reference_strain_rate);
-  line("strain_rate_smoothing_time", m.strain_rate_smoothing_time);
-  out << "eos = \"" << (m.eos == EquationOfState::MieGruneisen ? "mie_gruneisen" : "linear") << "\"\n";
-  line("mg_c0", m.mg_c0);
-  line("mg_s", m.mg_s);
-  line("mg_gamma0", m.mg_gamma0);
-  line("bulk_viscosity_linear", m.bulk_viscosity_linear);
-  line("bulk_viscosity_quadratic", m.bulk_viscosity_quadratic);
-  out << "damage = " << (m.damage_enabled ? "true" : "false") << "\n";
-  line("jc_D1", m.jc_D1);
-  line("jc_D2", m.jc_D2);
-  line("jc_D3", m.jc_D3);
-  line("jc_D4", m.jc_D4);
-  line("jc_D5", m.jc_D5);
-  line("min_failure_strain", m.min_failure_strain);
-  line("damage_triaxiality_cutoff", m.damage_triaxiality_cutoff);
-  out << "damage_evolution = \"" << (m.damage_evolution == DamageEvolution::Exponential ? "exponential" : "linear")
-      << "\"\n";
-  line("fracture_energy", m.fracture_energy);
-  line("fracture_energy_brittle", m.fracture_energy_brittle);
-  line("fracture_transition_strain_rate", m.fracture_transition_strain_rate);
-  line("fracture_transition_exponent", m.fracture_transition_exponent);
-  line("max_damage", m.max_damage);
+  write_material_keys(m, out);
 }
 
 void write_scene_tables(const Scene& s, std::ostream& out) {

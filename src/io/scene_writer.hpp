@@ -5,7 +5,7 @@
 // appended by run/case_loading.hpp's write_scene, which writes the expanded scene of each run.
 #include <ostream>
 
-#include "core/scene.hpp"
+#include "solver/scene.hpp"
 
 namespace mpmcut {
 

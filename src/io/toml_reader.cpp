@@ -134,13 +134,6 @@ void TableReader::check(std::string_view key, bool ok, std::string_view allowed,
   fail(key, fmt::format("must be {}, got {}", allowed, n ? describe_value(*n) : fmt::format("{}", value)));
 }
 
-std::string Range::text() const {
-  std::string t = fmt::format("in {}{:g}, {:g}{}", min_open ? '(' : '[', min, max, max_open ? ')' : ']');
-  if (!unit.empty()) t += fmt::format(" {}", unit);
-  if (!note.empty()) t += fmt::format(" ({})", note);
-  return t;
-}
-
 void TableReader::check(std::string_view key, double value, const Range& range) {
   check(key, range.contains(value), range.text(), value);
 }

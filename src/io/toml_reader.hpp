@@ -17,6 +17,7 @@
 
 #include <toml++/toml.h>
 
+#include "core/range.hpp"
 #include "core/tensor.hpp"
 #include "io/input_error.hpp"
 
@@ -40,33 +41,6 @@ toml::table parse_toml(std::string_view text, const std::string& source_name);
 std::string describe_type(const toml::node& node);
 // A value as it would be written in TOML (tables and long arrays abbreviated).
 std::string describe_value(const toml::node& node);
-
-// The documented range of a number key: an interval, either end open or closed, with its unit and
-// an optional note ("0 = automatic"). Declared next to where the key is read, so that a new key
-// gets its bound in the same line (docs/reliability.md lists them all).
-struct Range {
-  double min = 0.0, max = 0.0;
-  bool min_open = false, max_open = false;
-  std::string_view unit;  // "m", "K", "" for a ratio
-  std::string_view note;  // e.g. "0 = automatic"
-  bool contains(double x) const {
-    return (min_open ? x > min : x >= min) && (max_open ? x < max : x <= max);
-  }
-  std::string text() const;  // "in (0, 1] m (0 = automatic)"
-  // Shorthands for the usual shapes: (lo, hi], [lo, hi], (lo, hi), [lo, hi).
-  static Range open_closed(double lo, double hi, std::string_view unit = "", std::string_view note = "") {
-    return {lo, hi, true, false, unit, note};
-  }
-  static Range closed(double lo, double hi, std::string_view unit = "", std::string_view note = "") {
-    return {lo, hi, false, false, unit, note};
-  }
-  static Range open(double lo, double hi, std::string_view unit = "", std::string_view note = "") {
-    return {lo, hi, true, true, unit, note};
-  }
-  static Range closed_open(double lo, double hi, std::string_view unit = "", std::string_view note = "") {
-    return {lo, hi, false, true, unit, note};
-  }
-};
 
 class TableReader {
  public:

@@ -2,8 +2,6 @@
 
 #include <cmath>
 #include <limits>
-#include <stdexcept>
-#include <string>
 
 namespace mpmcut {
 
@@ -22,22 +20,7 @@ JohnsonCookDamage::JohnsonCookDamage(const MaterialParameters& p)
       transition_rate_(p.fracture_transition_strain_rate),
       transition_exponent_(p.fracture_transition_exponent),
       max_damage_(p.max_damage) {
-  if (!enabled_) return;
-  const std::string who = "material '" + p.name + "' (damage): ";
-  if (!(min_failure_strain_ > 0.0))
-    throw std::invalid_argument(who + "need min_failure_strain > 0, got " + std::to_string(min_failure_strain_));
-  if (!(fracture_energy_ >= 0.0))
-    throw std::invalid_argument(who + "need fracture energy G_f >= 0, got " + std::to_string(fracture_energy_) +
-                                " J/m^2");
-  if (!(transition_rate_ >= 0.0))
-    throw std::invalid_argument(who + "need fracture_transition_strain_rate >= 0, got " +
-                                std::to_string(transition_rate_) + " 1/s");
-  if (transition_rate_ > 0.0 && !(brittle_fracture_energy_ > 0.0 && transition_exponent_ > 0.0))
-    throw std::invalid_argument(who + "a rate-dependent fracture energy needs fracture_energy_brittle > 0 and "
-                                "fracture_transition_exponent > 0, got " + std::to_string(brittle_fracture_energy_) +
-                                " J/m^2 and " + std::to_string(transition_exponent_));
-  if (!(max_damage_ > 0.0 && max_damage_ <= 1.0))
-    throw std::invalid_argument(who + "need 0 < max_damage <= 1, got " + std::to_string(max_damage_));
+  require_valid(p, damage_parameter_table());
 }
 
 double JohnsonCookDamage::failure_strain(double eta, double log_rate_ratio, double t_star) const {

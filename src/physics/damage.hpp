@@ -15,7 +15,7 @@
 //              D <= max_damage; D = max_damage means fully failed.
 // Degradation: sigma = (1 - D) s - p_eff I,  p_eff = p if p >= 0 (compression kept) else (1 - D) p;
 //              failed: s = 0, p_eff = max(p, 0).
-#include "core/scene.hpp"
+#include "physics/material_parameters.hpp"
 #include "core/tensor.hpp"
 
 namespace mpmcut {

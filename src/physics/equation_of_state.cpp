@@ -1,8 +1,5 @@
 #include "physics/equation_of_state.hpp"
 
-#include <stdexcept>
-#include <string>
-
 namespace mpmcut {
 
 EquationOfStateModel::EquationOfStateModel(const MaterialParameters& p)
@@ -16,15 +13,7 @@ EquationOfStateModel::EquationOfStateModel(const MaterialParameters& p)
       room_temperature_(p.room_temperature),
       b1_(p.bulk_viscosity_linear),
       b2_(p.bulk_viscosity_quadratic) {
-  const std::string who = "material '" + p.name + "' (equation of state): ";
-  if (!(rho0_ > 0.0)) throw std::invalid_argument(who + "need density > 0, got " + std::to_string(rho0_));
-  if (kind_ == EquationOfState::Linear && !(K_ > 0.0))
-    throw std::invalid_argument(who + "need a positive bulk modulus (check E and nu), got " + std::to_string(K_));
-  if (kind_ == EquationOfState::MieGruneisen && !(p.mg_c0 > 0.0))
-    throw std::invalid_argument(who + "Mie-Grueneisen needs mg_c0 > 0, got " + std::to_string(p.mg_c0) + " m/s");
-  if (b1_ < 0.0 || b2_ < 0.0)
-    throw std::invalid_argument(who + "bulk viscosity coefficients must be >= 0, got b1 = " + std::to_string(b1_) +
-                                ", b2 = " + std::to_string(b2_));
+  require_valid(p, equation_of_state_parameter_table(), elastic_parameter_table());
 }
 
 double EquationOfStateModel::pressure(double old_pressure, double dEv, double density, double T) const {

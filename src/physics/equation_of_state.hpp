@@ -9,7 +9,7 @@
 //     E = rho0 c_v (T - T_r): thermal energy per unit reference volume above room temperature
 //   Bulk viscosity (von Neumann-Richtmyer, Abaqus/Explicit form, compression only, dEps_v/dt < 0):
 //     q = b1 rho c L |epsdot_v| + rho (b2 L epsdot_v)^2,   L = cell size, c = current wave speed
-#include "core/scene.hpp"
+#include "physics/material_parameters.hpp"
 
 namespace mpmcut {
 

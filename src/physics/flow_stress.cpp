@@ -2,16 +2,8 @@
 
 #include <cmath>
 #include <limits>
-#include <stdexcept>
-#include <string>
 
 namespace mpmcut {
-
-namespace {
-[[noreturn]] void reject(const MaterialParameters& p, const std::string& what) {
-  throw std::invalid_argument("material '" + p.name + "' (Johnson-Cook flow stress): " + what);
-}
-}  // namespace
 
 JohnsonCookFlowStress::JohnsonCookFlowStress(const MaterialParameters& p)
     : A_(p.jc_A),
@@ -27,17 +19,7 @@ JohnsonCookFlowStress::JohnsonCookFlowStress(const MaterialParameters& p)
       hardening_is_linear_(p.jc_n == 1.0),
       rate_dependent_(p.jc_C != 0.0),
       thermal_is_linear_(p.jc_m == 1.0) {
-  if (!(A_ >= 0.0) || !(B_ >= 0.0) || A_ + B_ <= 0.0)
-    reject(p, "need A >= 0, B >= 0 and A + B > 0, got A = " + std::to_string(A_) + " Pa, B = " + std::to_string(B_) +
-                  " Pa");
-  if (!(n_ > 0.0)) reject(p, "need n > 0, got " + std::to_string(n_));
-  if (!(C_ >= 0.0)) reject(p, "need C >= 0, got " + std::to_string(C_));
-  if (!(m_ > 0.0)) reject(p, "need m > 0, got " + std::to_string(m_));
-  if (!(reference_rate_ > 0.0))
-    reject(p, "need a reference strain rate > 0, got " + std::to_string(reference_rate_) + " 1/s");
-  if (!(melting_temperature_ > room_temperature_))
-    reject(p, "need melting temperature > room temperature, got T_m = " + std::to_string(melting_temperature_) +
-                  " K, T_r = " + std::to_string(room_temperature_) + " K");
+  require_valid(p, flow_stress_parameter_table(), thermal_parameter_table());
   inverse_reference_rate_ = 1.0 / reference_rate_;
   inverse_temperature_range_ = 1.0 / (melting_temperature_ - room_temperature_);
 }

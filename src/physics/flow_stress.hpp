@@ -7,7 +7,7 @@
 // The rate term is floored at epsdot* = 1 (no rate effect below epsdot0, as in Abaqus), so ln(0)
 // never occurs; T* is clamped at 0 below room temperature (pow of a negative base is NaN for a
 // non-integer m) and at 1, where the strength is zero (melt).
-#include "core/scene.hpp"
+#include "physics/material_parameters.hpp"
 
 namespace mpmcut {
 

@@ -5,7 +5,7 @@
 #include <memory>
 
 #include "core/particles.hpp"
-#include "core/scene.hpp"
+#include "physics/material_parameters.hpp"
 
 namespace mpmcut {
 
@@ -28,7 +28,10 @@ struct StepContext {
 
 class Material {
  public:
-  explicit Material(const MaterialParameters& params) : params_(params), p_wave_speed_(params.p_wave_speed()) {}
+  // Throws std::invalid_argument when the parameters break a rule of their tables (require_valid).
+  explicit Material(const MaterialParameters& params) : params_(params), p_wave_speed_(params.p_wave_speed()) {
+    require_valid(params);
+  }
   virtual ~Material() = default;
   const MaterialParameters& parameters() const { return params_; }
 

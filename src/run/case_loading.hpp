@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "core/scene.hpp"
+#include "solver/scene.hpp"
 #include "io/input_error.hpp"
 
 namespace mpmcut {

@@ -2,7 +2,7 @@
 // The chip analysis (analysis/chip_analysis.hpp) of the final state of a cutting run, written
 // into summary.json under "chip" and "temperature" when the run ends. `mpmcut analyze` gives the
 // same for any snapshot of a finished run.
-#include "core/scene.hpp"
+#include "solver/scene.hpp"
 #include "io/run_observer.hpp"
 
 namespace mpmcut {

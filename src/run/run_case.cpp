@@ -11,7 +11,7 @@
 
 #include <fmt/format.h>
 
-#include "core/run_estimate.hpp"
+#include "io/run_estimate.hpp"
 #include "io/atomic_file.hpp"
 #include "io/checkpoint.hpp"
 #include "io/input_error.hpp"

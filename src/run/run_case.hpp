@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/scene.hpp"
+#include "solver/scene.hpp"
 #include "run/case_run.hpp"
 #include "run/run_options.hpp"
 

@@ -5,7 +5,7 @@
 #include <memory>
 #include <vector>
 
-#include "core/scene.hpp"
+#include "solver/scene.hpp"
 #include "io/run_observer.hpp"
 
 namespace mpmcut {

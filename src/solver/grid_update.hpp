@@ -2,7 +2,7 @@
 // The grid stage of the step: the domain's boundary flags on the nodes, velocity boundary
 // conditions, and the explicit momentum update.
 #include "core/grid.hpp"
-#include "core/scene.hpp"
+#include "solver/scene.hpp"
 
 namespace mpmcut {
 

@@ -9,7 +9,7 @@
 #include "contact/rigid_contact.hpp"
 #include "core/grid.hpp"
 #include "core/particles.hpp"
-#include "core/scene.hpp"
+#include "solver/scene.hpp"
 
 namespace mpmcut {
 

@@ -2,7 +2,7 @@
 // The particles a scene starts with.
 #include "core/grid.hpp"
 #include "core/particles.hpp"
-#include "core/scene.hpp"
+#include "solver/scene.hpp"
 
 namespace mpmcut {
 

@@ -13,7 +13,7 @@
 #include "core/energy_totals.hpp"
 #include "core/grid.hpp"
 #include "core/particles.hpp"
-#include "core/scene.hpp"
+#include "solver/scene.hpp"
 #include "core/shape_functions.hpp"
 #include "core/strip_colouring.hpp"
 #include "physics/material.hpp"

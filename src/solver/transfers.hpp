@@ -9,7 +9,7 @@
 
 #include "core/grid.hpp"
 #include "core/particles.hpp"
-#include "core/scene.hpp"
+#include "solver/scene.hpp"
 #include "core/shape_functions.hpp"
 #include "core/strip_colouring.hpp"
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "core/scene.hpp"
+#include "solver/scene.hpp"
 
 namespace mpmcut {
 

@@ -18,8 +18,7 @@ INCLUDE = re.compile(r'^\s*#\s*include\s+"([a-z_]+)/', re.MULTILINE)
 
 # (file, the layer it includes): crossings to remove (issue 13), not to add to.
 KNOWN = {
-    ("src/core/scene.hpp", "cutting"),          # the scene carries the cutting process it was built from
-    ("src/core/run_estimate.cpp", "io"),
+    ("src/solver/scene.hpp", "cutting"),        # the scene carries the cutting process it was built from
 }
 
 

@@ -2,7 +2,7 @@
 // Small helpers to build scenes in code for tests (the same Scene the input parser produces).
 #include <string>
 
-#include "core/scene.hpp"
+#include "solver/scene.hpp"
 
 namespace mpmcut::testing {
 

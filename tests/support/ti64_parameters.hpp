@@ -4,7 +4,7 @@
 // Johnson 1985 flow stress: A 862 MPa, B 331 MPa, n 0.34, C 0.012, m 0.8, T_m 1878 K (as most
 // cutting papers; docs/materials.md); elastic/thermal constants after Sandia Payette (E 113.8 GPa, nu 0.342, c 526.3 J/(kg K));
 // damage D1..D5 = -0.09, 0.25, -0.5, 0.014, 3.87 (Johnson-Holmquist/Lesuer; docs/references.md).
-#include "core/scene.hpp"
+#include "physics/material_parameters.hpp"
 
 namespace mpmcut::testing {
 

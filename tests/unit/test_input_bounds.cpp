@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "core/run_estimate.hpp"
+#include "io/run_estimate.hpp"
 #include "../support/parse_errors.hpp"
 #include "io/input_error.hpp"
 #include "run/case_loading.hpp"

@@ -1,13 +1,9 @@
-#include "core/scene.hpp"
+#include "core/scene_specs.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 namespace mpmcut {
-
-double MaterialParameters::p_wave_speed() const {
-  return std::sqrt((bulk_modulus() + 4.0 * shear_modulus() / 3.0) / density);
-}
 
 namespace {
 // Even-odd rule: a point is inside a simple polygon if a ray crosses its edges an odd number of times.
@@ -55,12 +51,6 @@ void Shape::bounds(Vec2& lo, Vec2& hi) const {
       }
       return;
   }
-}
-
-int Scene::material_index(const std::string& name) const {
-  for (std::size_t i = 0; i < materials.size(); ++i)
-    if (materials[i].name == name) return static_cast<int>(i);
-  return -1;
 }
 
 }  // namespace mpmcut

@@ -1,4 +1,4 @@
-#include "core/run_estimate.hpp"
+#include "io/run_estimate.hpp"
 
 #include <unistd.h>
 

@@ -4,7 +4,7 @@
 // is refused as an input error before the first large allocation (docs/reliability.md).
 #include <string>
 
-#include "core/scene.hpp"
+#include "solver/scene.hpp"
 
 namespace mpmcut {
 
