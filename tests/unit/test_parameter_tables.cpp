@@ -1,0 +1,130 @@
+// The physics models' parameter tables (src/physics/*_parameters.hpp) are the one rule set for a
+// material: every value the input reader refuses at a model limit, the physics constructors refuse
+// too, and the other way round; caps of plausibility bind the reader only. The writer writes every
+// key the reader reads.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <string>
+
+#include "io/input_error.hpp"
+#include "io/material_keys.hpp"
+#include "io/material_library.hpp"
+#include "io/scene_writer.hpp"
+#include "physics/material.hpp"
+#include "../support/ti64_parameters.hpp"
+
+namespace mpmcut {
+namespace {
+
+// Every switch on (Johnson-Cook, Mie-Grueneisen, damage, a rate-dependent G_f): every parameter in use.
+MaterialParameters everything_on() {
+  MaterialParameters m = testing::with_jc_damage(testing::ti64_johnson_1985());
+  m.eos = EquationOfState::MieGruneisen;
+  m.mg_c0 = 5130.0;
+  m.mg_s = 1.028;
+  m.mg_gamma0 = 1.23;
+  m.fracture_transition_strain_rate = 2e6;
+  m.fracture_energy_brittle = 5e3;
+  return m;
+}
+
+// The reader's message for `m` written as a library file ("" if it reads).
+std::string reader_error(const MaterialParameters& m) {
+  std::ostringstream text;
+  write_material(m, text);
+  try {
+    MaterialLibrary().add_file(text.str(), "m.toml");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+bool physics_refuses_key(const MaterialParameters& m, std::string_view key) {
+  for (const ParameterProblem& p : parameter_problems(m, Check::ModelLimits))
+    if (p.key == key) return true;
+  return false;
+}
+
+TEST(ParameterTables, ReaderAndPhysicsRefuseTheSameValuesAtEveryModelLimit) {
+  const MaterialParameters base = everything_on();
+  ASSERT_EQ(reader_error(base), "");
+  ASSERT_NO_THROW(make_material(base));
+  int limits = 0, caps = 0;
+  for_each_parameter_table([&]<class P>(const ParameterTable<P>& table) {
+    for (const Parameter<P>& row : table.parameters) {
+      if (row.kind != Parameter<P>::Kind::Number) continue;
+      const Range r = row.range_at(base);
+      // Just outside each end of the range.
+      for (const bool lower : {true, false}) {
+        const double end = lower ? r.min : r.max;
+        const bool open = lower ? r.min_open : r.max_open;
+        const double outside = open ? end : std::nextafter(end, lower ? -1e300 : 1e300);
+        MaterialParameters m = base;
+        static_cast<P&>(m).*row.number = outside;
+        SCOPED_TRACE(std::string(row.key) + (lower ? " below " : " above ") + std::to_string(outside));
+        const std::string message = reader_error(m);
+        EXPECT_NE(message.find("key 'material[0]." + std::string(row.key) + "': must be " + r.text()), std::string::npos)
+            << message;
+        if (lower ? row.min_is_cap : row.max_is_cap) {
+          ++caps;
+          EXPECT_FALSE(physics_refuses_key(m, row.key));
+        } else {
+          ++limits;
+          EXPECT_TRUE(physics_refuses_key(m, row.key));
+          EXPECT_THROW(make_material(m), std::invalid_argument);
+        }
+      }
+    }
+  });
+  EXPECT_GT(limits, 20);
+  EXPECT_GT(caps, 20);
+}
+
+// Rules that no single range expresses, and switches, are refused by both too.
+TEST(ParameterTables, RulesAndSwitchesBindReaderAndPhysicsAlike) {
+  MaterialParameters no_yield = everything_on();
+  no_yield.jc_A = no_yield.jc_B = 0.0;
+  EXPECT_NE(reader_error(no_yield).find("key 'material[0].jc_B': must be positive when jc_A = 0"), std::string::npos);
+  EXPECT_THROW(make_material(no_yield), std::invalid_argument);
+
+  MaterialParameters elastic_with_damage = everything_on();
+  elastic_with_damage.model = MaterialModel::Elastic;
+  EXPECT_NE(reader_error(elastic_with_damage).find("key 'material[0].damage': must be false unless model = "
+                                                   "\"johnson_cook\""),
+            std::string::npos);
+  EXPECT_THROW(make_material(elastic_with_damage), std::invalid_argument);
+
+  // A key its switch leaves unused may hold 0, its default: an elastic material with jc_m = 0.
+  MaterialParameters elastic = testing::ti64_johnson_1985();
+  elastic.model = MaterialModel::Elastic;
+  elastic.jc_m = 0.0;
+  elastic.specific_heat = 0.0;
+  EXPECT_EQ(reader_error(elastic), "");
+  EXPECT_NO_THROW(make_material(elastic));
+}
+
+// What the writer writes, the reader reads back to an equal material: every table key is written.
+TEST(ParameterTables, WriterWritesEveryKeyTheReaderReads) {
+  const MaterialParameters m = everything_on();
+  std::ostringstream text;
+  write_material(m, text);
+  MaterialLibrary lib;
+  lib.add_file(text.str(), "m.toml");
+  ASSERT_NE(lib.find(m.name), nullptr);
+  EXPECT_TRUE(*lib.find(m.name) == m);
+  int keys = 0;
+  for_each_parameter_table([&](const auto& table) {
+    for (const auto& row : table.parameters) {
+      ++keys;
+      EXPECT_NE(text.str().find("\n" + std::string(row.key) + " = "), std::string::npos) << row.key;
+    }
+  });
+  EXPECT_EQ(keys, 36);  // the model, 3 elastic, 5 thermal, 7 flow, 6 equation of state, 14 damage
+}
+
+}  // namespace
+}  // namespace mpmcut
