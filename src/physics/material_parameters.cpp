@@ -66,7 +66,14 @@ std::vector<ParameterProblem> parameter_problems(const ParameterTable<P>& table,
                                                  Check check) {
   std::vector<ParameterProblem> out;
   const P& p = m;
-  for (const Parameter<P>& row : table.parameters) {
+  // The parameters always in use first: a switch with a wrong value (fracture_transition_strain_rate
+  // = 1e308) is reported at itself, not at a parameter it turns on (fracture_energy_brittle).
+  std::vector<const Parameter<P>*> rows;
+  for (const bool always : {true, false})
+    for (const Parameter<P>& row : table.parameters)
+      if ((row.use == InUse::Always) == always) rows.push_back(&row);
+  for (const Parameter<P>* row_pointer : rows) {
+    const Parameter<P>& row = *row_pointer;
     const bool used = in_use(row.use, m);
     switch (row.kind) {
       case Parameter<P>::Kind::Number: {
