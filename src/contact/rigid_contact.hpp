@@ -15,7 +15,8 @@
 #include "core/energy_totals.hpp"
 #include "core/grid.hpp"
 #include "core/particles.hpp"
-#include "solver/scene.hpp"
+#include "core/scene_specs.hpp"
+#include "physics/material_parameters.hpp"
 #include "core/shape_functions.hpp"
 
 namespace mpmcut {

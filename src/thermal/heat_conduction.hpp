@@ -8,7 +8,8 @@
 
 #include "core/grid.hpp"
 #include "core/particles.hpp"
-#include "solver/scene.hpp"
+#include "core/scene_specs.hpp"
+#include "physics/material_parameters.hpp"
 #include "core/shape_functions.hpp"
 #include "core/strip_colouring.hpp"
 
