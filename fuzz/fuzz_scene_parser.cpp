@@ -12,7 +12,8 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   try {
-    const mpmcut::Scene scene = mpmcut::parse_scene(text, "fuzz.toml");
+    const mpmcut::Case c = mpmcut::parse_case(text, "fuzz.toml");
+    const mpmcut::Scene& scene = c.scene;
     // The estimate runs on every accepted scene before allocation: it must not crash either, and
     // its refusal is an InputError like any other.
     mpmcut::check_run_fits(scene, mpmcut::estimate_run(scene), 1e12);

@@ -66,14 +66,10 @@ void peak_in(PeakTemperature& peak, const Particles& p, std::size_t i) {
 
 }  // namespace
 
-ChipAnalysisSetup chip_analysis_setup(const Scene& scene, const Vec2& tool_displacement_m, double time_s) {
-  if (!scene.cutting)
-    throw std::invalid_argument(fmt::format(
-        "scene '{}' is not a cutting scene (no [cutting_process] record): the chip analysis needs the cut's "
-        "parameters", scene.title));
+ChipAnalysisSetup chip_analysis_setup(const Scene& scene, const CuttingParameters& c, const Vec2& tool_displacement_m,
+                                      double time_s) {
   if (scene.rigid_bodies.empty() || scene.bodies.empty())
     throw std::invalid_argument("chip analysis: a cutting scene needs the workpiece (body 0) and the tool (rigid body 0)");
-  const CuttingParameters& c = *scene.cutting;
   ChipAnalysisSetup s;
   s.uncut_chip_thickness_m = c.uncut_chip_thickness;
   s.cutting_speed_m_per_s = c.cutting_speed;

@@ -16,6 +16,7 @@
 #include "contact/rigid_polygon.hpp"
 #include "core/particles.hpp"
 #include "solver/scene.hpp"
+#include "cutting/cutting_parameters.hpp"
 
 namespace mpmcut {
 
@@ -64,10 +65,11 @@ struct ChipAnalysisSetup {
   double particle_spacing_m() const { return cell_size_m / particles_per_cell; }
 };
 
-// From a scene built by the cutting preset (scene.cutting set; the tool is rigid_bodies[0], the
+// From a scene built by the cutting preset from `cutting` (the tool is rigid_bodies[0], the
 // workpiece body 0) with the tool displaced by `tool_displacement_m` from its start. Throws
-// std::invalid_argument when the scene is not a cutting scene.
-ChipAnalysisSetup chip_analysis_setup(const Scene& scene, const Vec2& tool_displacement_m, double time_s);
+// std::invalid_argument when the scene lacks the workpiece or the tool.
+ChipAnalysisSetup chip_analysis_setup(const Scene& scene, const CuttingParameters& cutting,
+                                      const Vec2& tool_displacement_m, double time_s);
 
 struct PeakTemperature {
   std::optional<double> max_K;          // empty: no particle in the region

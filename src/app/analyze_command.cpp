@@ -64,13 +64,13 @@ int analyze(const fs::path& dir, const std::string& snapshot) {
   if (!fs::exists(summary_file) || !fs::exists(scene_file))
     throw AnalyzeError(fmt::format("'{}' is not a result directory of mpmcut run (no summary.json and scene.toml)",
                                    dir.string()));
-  Scene scene;
+  Case loaded;
   try {
-    scene = load_scene(scene_file);
+    loaded = load_case(scene_file);
   } catch (const InputError& e) {
     throw AnalyzeError(fmt::format("cannot read the run's scene: {}", e.what()));
   }
-  if (!scene.cutting)
+  if (!loaded.cutting)
     throw AnalyzeError(fmt::format("'{}' is not a cutting run (its scene.toml has no [cutting_process] record): "
                                    "the chip analysis needs the cut's parameters",
                                    dir.string()));
@@ -80,8 +80,10 @@ int analyze(const fs::path& dir, const std::string& snapshot) {
   const fs::path vtu = dir / entry.file;
   const VtuSnapshot snap = read_particles_vtu(vtu);
   // The tool moves at its prescribed velocity from t = 0 (cutting_scene.cpp).
+  const Scene& scene = loaded.scene;
   const Vec2 displacement = scene.rigid_bodies.at(0).velocity * snap.time_s;
-  const ChipAnalysis a = analyze_chip(snap.particles, chip_analysis_setup(scene, displacement, snap.time_s));
+  const ChipAnalysis a =
+      analyze_chip(snap.particles, chip_analysis_setup(scene, *loaded.cutting, displacement, snap.time_s));
 
   std::cout << fmt::format("{} ({})\n", dir.string(), entry.file) << chip_summary_text(a);
   nlohmann::json chip = chip_json(a), temperature = temperature_json(a);

@@ -194,8 +194,9 @@ void bench_plastic(const BenchOptions& o) {
 // suffers least) until the tool has travelled half the uncut chip thickness past first contact so the
 // chip has started to form, then timed for `cutting_steps` steps at each thread count in turn.
 void bench_cutting(const BenchOptions& o) {
-  const Scene scene = default_cutting_scene();
-  const CuttingParameters& c = *scene.cutting;
+  const Case cut = default_cutting_case();
+  const Scene& scene = cut.scene;
+  const CuttingParameters& c = *cut.cutting;
   const int warmup_threads = *std::min_element(o.threads.begin(), o.threads.end());
   omp_set_num_threads(warmup_threads);
   Simulation sim(scene);

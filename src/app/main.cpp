@@ -18,6 +18,7 @@
 #include "app/stop_signal.hpp"
 #include "io/run_estimate.hpp"
 #include "io/input_error.hpp"
+#include "cutting/cutting_case.hpp"
 #include "run/case_loading.hpp"
 
 int main(int argc, char** argv) {
@@ -117,19 +118,19 @@ int main(int argc, char** argv) {
     return resume_case(resume_options);
   }
 
-  Scene scene;
+  Case c;
   try {
     // Without a case file: the built-in Ti-6Al-4V cut (cases/ti64_default.toml); --set applies to it.
-    scene = case_file.empty() ? default_cutting_scene(overrides) : load_scene(case_file, overrides);
+    c = case_file.empty() ? default_cutting_case(overrides) : load_case(case_file, overrides);
   } catch (const InputError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return kExitInputError;
   }
   if (check_only) {
-    const RunEstimate e = estimate_run(scene);
+    const RunEstimate e = estimate_run(c.scene);
     const double available = available_memory_bytes();
     try {
-      check_run_fits(scene, e, available);
+      check_run_fits(c.scene, e, available, run_size_keys(c));
     } catch (const InputError& error) {
       std::cerr << "error: " << error.what() << "\n";
       return kExitInputError;
@@ -150,7 +151,7 @@ int main(int argc, char** argv) {
   run_options.checkpoint_every = parse_checkpoint_interval(checkpoint_every);
   int code = -1;
   if (keep_complete) {
-    switch (existing_run(out_dir, scene)) {
+    switch (existing_run(out_dir, c)) {
       case ExistingRun::Complete:
         std::cerr << "kept: " << out_dir << " already holds the complete run of this scene\n";
         return kExitComplete;
@@ -163,7 +164,7 @@ int main(int argc, char** argv) {
         break;
     }
   }
-  if (code < 0) code = run_case(scene, run_options);
+  if (code < 0) code = run_case(c, run_options);
   // A signal that came after the last step: the results are complete, but the program stops here
   // (no pictures) with the documented code.
   if (program_stop_token().stop_requested()) {
@@ -172,7 +173,7 @@ int main(int argc, char** argv) {
   }
   // A complete cut gets its pictures (chip fields, forces) as `mpmcut plot` draws them; a missing or
   // failing plotter is a warning, never a failed run.
-  if (code == 0 && scene.cutting && !no_plots) {
+  if (code == 0 && c.cutting && !no_plots) {
     std::string why;
     if (!python_plotting_available(true, why))
       std::cerr << "warning: no pictures (" << why << "); the results are complete\n";

@@ -50,13 +50,13 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
   const fs::path out = o.out_dir.empty() ? fs::path("results") / ("sweep_" + fs::path(o.case_file).stem().string())
                                          : fs::path(o.out_dir);
   std::vector<double> feeds_m = o.feeds_m;
-  if (feeds_m.empty()) {  // the case's own feed (load_scene also checks the case before anything runs)
-    const Scene scene = load_scene(o.case_file, o.overrides);
-    if (!scene.cutting) {
+  if (feeds_m.empty()) {  // the case's own feed (load_case also checks the case before anything runs)
+    const Case c = load_case(o.case_file, o.overrides);
+    if (!c.cutting) {
       std::cerr << "error: " << o.case_file << " has no [cutting] table: sweep needs a cutting case\n";
       return 2;
     }
-    feeds_m = {scene.cutting->uncut_chip_thickness};
+    feeds_m = {c.cutting->uncut_chip_thickness};
   }
   fs::create_directories(out / "logs");
   const int jobs = o.jobs > 0 ? o.jobs : std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / o.threads);

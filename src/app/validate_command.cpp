@@ -200,7 +200,7 @@ void select_conditions(std::vector<Condition>& all, const ValidateOptions& o) {
     throw InputError("the selection (--h, --speeds-m-per-min, --conditions together) matches no condition of the matrix");
 }
 
-Scene condition_scene(const Condition& c, const fs::path& case_file) { return parse_scene(c.case_text, case_file.string()); }
+Case condition_case(const Condition& c, const fs::path& case_file) { return parse_case(c.case_text, case_file.string()); }
 
 std::string resolution_text(const ValidateOptions& o) {
   if (o.quick) return "--quick: cell = t0/4, 1 particle per cell, 4 cells of tool travel (a pipeline check)";
@@ -226,16 +226,16 @@ int list_conditions(const std::vector<Condition>& conditions, const fs::path& ou
     if (!c.selected) continue;
     const fs::path case_file = out / "cases" / (c.id + ".toml");
     write_file_atomically(case_file, [&](std::ostream& s) { s << c.case_text; });
-    const Scene scene = condition_scene(c, case_file);
-    const RunCost cost = estimate_run_cost(scene);
-    const ExistingRun existing = existing_run(out / c.id, scene);
+    const Case condition = condition_case(c, case_file);
+    const RunCost cost = estimate_run_cost(condition.scene);
+    const ExistingRun existing = existing_run(out / c.id, condition);
     const char* state = existing == ExistingRun::Complete ? "complete" : existing == ExistingRun::Resumable ? "resumable" : "-";
     const double ps = cost.particle_steps();
     total_particle_steps += ps;
     if (existing != ExistingRun::Complete) total_to_run += ps;
     complete += existing == ExistingRun::Complete;
     ++n;
-    const auto& cut = *scene.cutting;
+    const auto& cut = *condition.cutting;
     std::cout << fmt::format("{:<36} {:>6} {:>6g} {:>8g} {:>6g} {:>10} {:>7.3g} {:>7.3g} {:>7.3g} {:>6.3g} {:>9} {:>10.3g} "
                              "{:>9.3g} {:>9.3g}  {}\n",
                              c.id, c.kind, c.h_mm, c.speed_m_per_min(), c.edge_radius_um,
@@ -304,7 +304,7 @@ int run_validation(const ValidateOptions& o) {
   for (Condition& c : conditions) {
     if (c.selected) continue;
     try {
-      if (existing_run(out / c.id, condition_scene(c, out / "cases" / (c.id + ".toml"))) != ExistingRun::Complete) continue;
+      if (existing_run(out / c.id, condition_case(c, out / "cases" / (c.id + ".toml"))) != ExistingRun::Complete) continue;
     } catch (const std::exception&) {
       continue;
     }

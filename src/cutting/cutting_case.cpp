@@ -36,7 +36,7 @@ MaterialParameters cutting_material(TableReader& top, TableReader& cutting, cons
 
 }  // namespace
 
-Scene read_cutting_case(TableReader& top) {
+Case read_cutting_case(TableReader& top) {
   for (const char* key : {"grid", "body", "rigid_body", "boundaries", "thermal", "body_force", "cutting_process"})
     if (top.has(key))
       top.fail(key, "not allowed in a [cutting] case, which builds its own grid, bodies, tool and boundaries; "
@@ -53,22 +53,28 @@ Scene read_cutting_case(TableReader& top) {
   scene.title = top.string("title", scene.title);
   if (auto t = top.optional_table("solver")) scene.solver = read_solver(*t, scene.solver);
   scene.output = read_output(top.optional_table("output"), scene.output);
-  return scene;
+  return {scene, params};
 }
 
-void read_cutting_process(TableReader& top, Scene& scene) {
+void read_cutting_process(TableReader& top, Case& c) {
   // An expanded cutting scene remembers its process, so that its force outputs are written.
   if (auto t = top.optional_table("cutting_process")) {
-    scene.cutting = read_cutting_parameters(*t);
-    if (scene.rigid_bodies.empty()) t->fail_table("[cutting_process] needs the tool as the first [[rigid_body]]");
+    c.cutting = read_cutting_parameters(*t);
+    if (c.scene.rigid_bodies.empty()) t->fail_table("[cutting_process] needs the tool as the first [[rigid_body]]");
   }
 }
 
-void write_cutting_process(const Scene& scene, std::ostream& out) {
-  if (!scene.cutting) return;
+void write_cutting_process(const Case& c, std::ostream& out) {
+  if (!c.cutting) return;
   out << "\n# The process this scene was built from (the tool is the first rigid body); it makes the run\n"
          "# write forces.csv and the cutting results. Edit the scene above, not this record.";
-  write_cutting_parameters(*scene.cutting, out, "cutting_process");
+  write_cutting_parameters(*c.cutting, out, "cutting_process");
+}
+
+RunSizeKeys run_size_keys(const Case& c) {
+  if (!c.cutting) return {};
+  return {"cutting.cell_size, cutting.cut_length, cutting.uncut_chip_thickness", "cutting.cut_length / cutting_speed",
+          "cutting.cell_size"};
 }
 
 }  // namespace mpmcut

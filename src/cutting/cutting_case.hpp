@@ -5,7 +5,8 @@
 // run/case_loading.hpp dispatches between a [cutting] case and a generic one.
 #include <ostream>
 
-#include "solver/scene.hpp"
+#include "cutting/case.hpp"
+#include "io/run_estimate.hpp"
 #include "io/toml_reader.hpp"
 
 namespace mpmcut {
@@ -13,12 +14,15 @@ namespace mpmcut {
 // A [cutting] case: the preset builds grid, workpiece, tool, boundaries and outputs from the
 // process parameters; [solver] and [output] may still adjust the numerics. The caller rejects
 // the unknown keys of `top` afterwards.
-Scene read_cutting_case(TableReader& top);
+Case read_cutting_case(TableReader& top);
 
-// [cutting_process] of an expanded scene into scene.cutting (absent: nothing).
-void read_cutting_process(TableReader& top, Scene& scene);
+// [cutting_process] of an expanded scene into c.cutting (absent: nothing).
+void read_cutting_process(TableReader& top, Case& c);
 
-// The [cutting_process] record of a scene built by the preset (none: nothing).
-void write_cutting_process(const Scene& scene, std::ostream& out);
+// The [cutting_process] record of a case built by the preset (none: nothing).
+void write_cutting_process(const Case& c, std::ostream& out);
+
+// The keys that set the run's size for check_run_fits' messages: the [cutting] keys for a cut.
+RunSizeKeys run_size_keys(const Case& c);
 
 }  // namespace mpmcut

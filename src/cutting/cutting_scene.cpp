@@ -76,7 +76,6 @@ Scene build_cutting_scene(const CuttingParameters& c, const MaterialParameters& 
   s.output.snapshot_interval = s.solver.end_time / std::max(1, c.snapshots);
   // Force rows every quarter cell of tool travel: fine enough to resolve chip segmentation.
   s.output.history_interval = 0.25 * h / c.cutting_speed;
-  s.cutting = c;
   return s;
 }
 

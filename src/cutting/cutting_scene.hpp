@@ -1,7 +1,7 @@
 #pragma once
 // The cutting preset: process parameters -> a general Scene (workpiece, tool, grid, boundary
 // conditions, outputs). The result is written next to the results as scene.toml, so a user
-// can see and edit exactly what ran.
+// can see and edit exactly what ran. The process itself travels beside the scene (cutting/case.hpp).
 #include "solver/scene.hpp"
 #include "cutting/cutting_parameters.hpp"
 

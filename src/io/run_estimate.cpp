@@ -112,23 +112,19 @@ std::string format_bytes(double bytes) {
   return fmt::format("{:.3g} MiB", bytes / (1024.0 * 1024.0));
 }
 
-void check_run_fits(const Scene& scene, const RunEstimate& e, double available) {
-  const bool cutting = scene.cutting.has_value();
+void check_run_fits(const Scene& scene, const RunEstimate& e, double available, const RunSizeKeys& keys) {
   const std::string where = scene.source_file.empty() ? "the case" : scene.source_file;
-  const std::string size_keys = cutting ? "cutting.cell_size, cutting.cut_length, cutting.uncut_chip_thickness"
-                                        : "grid.cell_size, grid.min/max, the bodies' shapes and particles_per_cell";
   if (available > 0.0 && e.bytes > available)
     throw InputError(fmt::format(
         "{}: the run needs about {} of memory ({:.3g} particles, {:.3g} grid nodes) but this machine has {} "
         "available; keys that set the size: {}",
-        where, format_bytes(e.bytes), e.particles, e.grid_nodes, format_bytes(available), size_keys));
+        where, format_bytes(e.bytes), e.particles, e.grid_nodes, format_bytes(available), keys.size));
   if (!(e.steps <= kMaxSteps))
     throw InputError(fmt::format(
         "{}: the run needs about {:.3g} time steps, more than the {:.0e} any run can finish; keys that set the step "
         "count: {} (simulated time), {}, solver.cfl, output.snapshot_interval/history_interval (steps land on every "
         "output time)",
-        where, e.steps, kMaxSteps, cutting ? "cutting.cut_length / cutting_speed" : "solver.end_time",
-        cutting ? "cutting.cell_size" : "grid.cell_size"));
+        where, e.steps, kMaxSteps, keys.simulated_time, keys.cell_size));
   if (!(e.snapshots <= kMaxSnapshots))
     throw InputError(fmt::format("{}: key 'output.snapshot_interval': asks for {:.3g} snapshots, at most {:.0e} "
                                  "(end_time / snapshot_interval)",

@@ -32,10 +32,21 @@ RunEstimate estimate_run(const Scene& scene);
 // missing), capped by a cgroup memory limit where one is set. Bytes; 0 if nothing can be read.
 double available_memory_bytes();
 
+// The case keys that set a run's size and step count, named in check_run_fits' messages: a generic
+// scene's by default; a case built by the cutting preset names its own (cutting/cutting_case.hpp).
+struct RunSizeKeys {
+  std::string size = "grid.cell_size, grid.min/max, the bodies' shapes and particles_per_cell";
+  std::string simulated_time = "solver.end_time";
+  std::string cell_size = "grid.cell_size";
+};
+
 // Throws InputError when the estimate does not fit (memory, steps, snapshots); the message says
 // how much the run needs, what the machine has and which keys to change.
-void check_run_fits(const Scene& scene, const RunEstimate& estimate, double available_bytes);
-inline void check_run_fits(const Scene& scene) { check_run_fits(scene, estimate_run(scene), available_memory_bytes()); }
+void check_run_fits(const Scene& scene, const RunEstimate& estimate, double available_bytes,
+                    const RunSizeKeys& keys = {});
+inline void check_run_fits(const Scene& scene, const RunSizeKeys& keys = {}) {
+  check_run_fits(scene, estimate_run(scene), available_memory_bytes(), keys);
+}
 
 std::string format_bytes(double bytes);
 

@@ -1,4 +1,4 @@
-// The Python module mpmcut's compiled part, mpmcut._mpmcut (docs/python.md): a case (Scene) and a
+// The Python module mpmcut's compiled part, mpmcut._mpmcut (docs/python.md): a case (Case) and a
 // run (run/case_run.hpp) as Python objects. src/python/mpmcut/__init__.py adds the Python-side
 // conveniences (overrides from a dict). A thin layer: the run is the library's, step for step.
 #include <filesystem>
@@ -46,10 +46,10 @@ class PyRun {
  public:
   explicit PyRun(std::unique_ptr<CaseRun> run) : run_(std::move(run)) {}
 
-  static PyRun open(const Scene& scene, const fs::path& out, bool force, int threads, bool progress,
+  static PyRun open(const Case& c, const fs::path& out, bool force, int threads, bool progress,
                     const std::string& checkpoint_every) {
     RunOptions o = run_options(out, force, threads, progress, checkpoint_every);
-    return PyRun(open_run(scene, o));
+    return PyRun(open_run(c, o));
   }
   static PyRun resume(const fs::path& out, bool force, int threads, bool progress,
                       const std::optional<std::string>& checkpoint_every) {
@@ -163,20 +163,20 @@ PYBIND11_MODULE(_mpmcut, m) {
   });
   ParticleViews::bind(m);
 
-  py::class_<Scene>(m, "Case", "A validated case (scene): what is simulated. Build it with mpmcut.load_case().")
+  py::class_<Case>(m, "Case", "A validated case (scene): what is simulated. Build it with mpmcut.load_case().")
       .def_static(
           "_from_file", [](const fs::path& file, const std::vector<std::string>& overrides) {
-            return load_scene(file, overrides);
+            return load_case(file, overrides);
           })
       .def_static("_from_toml",
                   [](const std::string& text, const std::string& name, const std::vector<std::string>& overrides) {
-                    return parse_scene(text, name, overrides);
+                    return parse_case(text, name, overrides);
                   })
-      .def_static("_default_cut", [](const std::vector<std::string>& overrides) { return default_cutting_scene(overrides); })
-      .def_property_readonly("title", [](const Scene& s) { return s.title; })
-      .def_property_readonly("source", [](const Scene& s) { return s.source_file; })
-      .def_property_readonly("end_time_s", [](const Scene& s) { return s.solver.end_time; })
-      .def_property_readonly("is_cutting", [](const Scene& s) { return s.cutting.has_value(); })
+      .def_static("_default_cut", [](const std::vector<std::string>& overrides) { return default_cutting_case(overrides); })
+      .def_property_readonly("title", [](const Case& c) { return c.scene.title; })
+      .def_property_readonly("source", [](const Case& c) { return c.scene.source_file; })
+      .def_property_readonly("end_time_s", [](const Case& c) { return c.scene.solver.end_time; })
+      .def_property_readonly("is_cutting", [](const Case& c) { return c.cutting.has_value(); })
       .def("toml", &scene_text, "The expanded scene as TOML (what the run writes as scene.toml).");
 
   py::class_<PyRun>(m, "Run", "A run writing into a result directory (docs/python.md).")

@@ -1,5 +1,6 @@
 #pragma once
-// A case -> a validated Scene, and a Scene -> its expanded case text: the one place that puts the
+// A case file -> a validated Case (cutting/case.hpp: the scene and, for a cut, its process), and a
+// Case -> its expanded case text: the one place that puts the
 // generic scene tables (io/scene_parser.hpp) and the cutting preset's sections
 // (cutting/cutting_case.hpp) together. A case with [cutting] is expanded by the preset; any other
 // is read table by table (and may carry a [cutting_process] record). docs/input.md documents every key.
@@ -10,32 +11,33 @@
 #include <string_view>
 #include <vector>
 
-#include "solver/scene.hpp"
+#include "cutting/case.hpp"
 #include "io/input_error.hpp"
 
 namespace mpmcut {
 
 // `overrides` are the command line's --set strings, "key.path=value", applied before validation
 // (io/scene_parser.hpp, parse_case_tree). Every problem is an InputError naming file:line:column.
-Scene load_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides = {});
-Scene parse_scene(std::string_view toml_text, const std::string& source_name,
-                  const std::vector<std::string>& overrides = {});
+Case load_case(const std::filesystem::path& file, const std::vector<std::string>& overrides = {});
+Case parse_case(std::string_view toml_text, const std::string& source_name,
+                const std::vector<std::string>& overrides = {});
 
 // The built-in demo (cases/elastic_demo.toml, compiled in): an elastic disk dropped onto a
 // frictionless floor, ~3k particles, a few seconds of run time. Used by `mpmcut run` without a case;
 // takes --set overrides like a case file.
-Scene default_elastic_demo_scene(const std::vector<std::string>& overrides = {});
+Case default_elastic_demo_case(const std::vector<std::string>& overrides = {});
 
 // The default run of `mpmcut run` without a case file (cases/ti64_default.toml, compiled in):
 // Ti-6Al-4V at 20 m/s, uncut chip thickness 0.1 mm.
-Scene default_cutting_scene(const std::vector<std::string>& overrides = {});
+Case default_cutting_case(const std::vector<std::string>& overrides = {});
 
-// The expanded scene: every key explicit, parses back to an equal Scene (scene.toml of a run).
-void write_scene(const Scene& scene, std::ostream& out);
-std::string scene_text(const Scene& scene);
+// The expanded scene: every key explicit, with the [cutting_process] record of a cut; parses back
+// to an equal Case (scene.toml of a run).
+void write_scene(const Case& c, std::ostream& out);
+std::string scene_text(const Case& c);
 
 // Hash (64-bit FNV-1a) of the expanded scene as write_scene() prints it: equal for scenes that
 // are equal, whatever file they came from. Checkpoints carry it (io/checkpoint.hpp).
-std::uint64_t scene_hash(const Scene& scene);
+std::uint64_t scene_hash(const Case& c);
 
 }  // namespace mpmcut

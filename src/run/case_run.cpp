@@ -28,19 +28,20 @@ void sync_path(const fs::path& p, bool folder = false) {
 
 }  // namespace
 
-CaseRun::CaseRun(const Scene& scene, fs::path root, const RunOptions& options, int threads)
+CaseRun::CaseRun(const Case& c, fs::path root, const RunOptions& options, int threads)
     : root_(std::move(root)),
       options_(options),
       threads_(threads),
       stop_(options.stop ? options.stop : &own_stop_),
-      sim_(scene),
-      scene_hash_(scene_hash(scene)),
+      sim_(c.scene),
+      cutting_(c.cutting),
+      scene_hash_(scene_hash(c)),
       store_(root_) {
   if (options.tune_threads && threads > 1) tuner_.emplace(threads);
 }
 
 void CaseRun::start() {
-  out_.emplace(root_, sim_, false);
+  out_.emplace(root_, sim_, cutting_, false);
   out_->history_row();
   out_->rigid_row();
   out_->snapshot();
@@ -54,7 +55,7 @@ void CaseRun::resume(Checkpoint&& c, const fs::path& file) {
   const RunLoopState loop = c.loop;
   const long step = c.state.step;
   std::move(c).restore(sim_);
-  out_.emplace(root_, sim_, true);
+  out_.emplace(root_, sim_, cutting_, true);
   out_->restore(loop);
   next_snapshot_ = loop.next_snapshot_s;
   next_history_ = loop.next_history_s;
@@ -87,7 +88,7 @@ void CaseRun::begin() {
   if (progress_) return;
   progress_.emplace(sim_.scene().solver.end_time, std::cerr,
                     options_.progress ? std::nullopt : std::optional<bool>(false));
-  std::cerr << console_line(mass_scaling_report(sim_));
+  std::cerr << console_line(mass_scaling_report(sim_, cutting_));
 }
 
 bool CaseRun::advance() {
@@ -177,7 +178,7 @@ int CaseRun::finish() {
   if (options_.progress) progress_->finish(status_);
   const double wall_s = wall_before_s_ + session_wall_s();
   try {
-    nlohmann::json sections = to_json(summarize(sim_, status_, wall_s, message_, threads_));
+    nlohmann::json sections = to_json(summarize(sim_, cutting_, status_, wall_s, message_, threads_));
     if (tuner_) sections["thread_tuning"] = {{"threads_in_use_at_end", tuner_->chosen()}, {"trials", tuner_->trials()}};
     if (!last_checkpoint_.empty()) sections["last_checkpoint"] = "checkpoints/" + last_checkpoint_;
     if (!resumed_from_.empty()) sections["resumed_from"] = "checkpoints/" + resumed_from_;
@@ -206,7 +207,7 @@ int CaseRun::run_to_end() {
 }
 
 RunSummary CaseRun::summary() const {
-  RunSummary s = summarize(sim_, ended_ ? status_ : run_status::running, wall_before_s_ + session_wall_s(), message_,
+  RunSummary s = summarize(sim_, cutting_, ended_ ? status_ : run_status::running, wall_before_s_ + session_wall_s(), message_,
                            threads_);
   if (!last_checkpoint_.empty()) s.last_checkpoint = "checkpoints/" + last_checkpoint_;
   if (!resumed_from_.empty()) s.resumed_from = "checkpoints/" + resumed_from_;

@@ -4,7 +4,7 @@
 // (run/run_case.hpp), the studies' runs and the Python module all step through this class, so
 // that a run writes the same files whoever drives it.
 //
-//   CaseRun run(scene, root, options, threads);
+//   CaseRun run(c, root, options, threads);   // c: a Case (cutting/case.hpp)
 //   run.start();                       // or run.resume(checkpoint, file)
 //   while (run.advance()) { ... }      // one step and its outputs per call
 //   int exit_code = run.finish();      // final snapshot, summary.json, the console line
@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "solver/simulation.hpp"
+#include "cutting/case.hpp"
 #include "core/thread_tuner.hpp"
 #include "io/checkpoint.hpp"
 #include "io/progress.hpp"
@@ -31,7 +32,7 @@ class CaseRun {
  public:
   // `root` is the (opened) result directory; `threads` the OpenMP threads already set.
   // Throws std::invalid_argument for a scene the solver cannot build.
-  CaseRun(const Scene& scene, std::filesystem::path root, const RunOptions& options, int threads);
+  CaseRun(const Case& c, std::filesystem::path root, const RunOptions& options, int threads);
 
   // A new run: the outputs at t = 0 and the first output times.
   void start();
@@ -78,6 +79,7 @@ class CaseRun {
   StopToken* stop_;
   std::optional<ThreadTuner> tuner_;  // picks 1..threads_ by timing (busy machines); none = fixed
   Simulation sim_;
+  std::optional<CuttingParameters> cutting_;  // the process of a cut (its outputs read it)
   std::uint64_t scene_hash_;
   CheckpointStore store_;
   std::optional<RunOutputs> out_;

@@ -10,13 +10,13 @@
 
 namespace mpmcut {
 
-ChipObserver::ChipObserver(const Scene& scene) : scene_(scene) {}
+ChipObserver::ChipObserver(const Scene& scene, const CuttingParameters& cutting) : scene_(scene), cutting_(cutting) {}
 
 void ChipObserver::at_finish(const Simulation& sim, nlohmann::json& summary) {
   // Also at the end of a failed or interrupted run: the state up to there is what the user has.
   // The analysis must never cost the run its summary, so a failure here becomes a note.
   try {
-    const ChipAnalysisSetup setup = chip_analysis_setup(scene_, sim.rigid_bodies().at(0).displacement, sim.time());
+    const ChipAnalysisSetup setup = chip_analysis_setup(scene_, cutting_, sim.rigid_bodies().at(0).displacement, sim.time());
     const ChipAnalysis a = analyze_chip(sim.particles(), setup);
     nlohmann::json chip = chip_json(a), temperature = temperature_json(a);
     chip["source"] = "final state of the run";

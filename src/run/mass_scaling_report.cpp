@@ -9,13 +9,13 @@
 
 namespace mpmcut {
 
-MassScalingReport mass_scaling_report(const Simulation& sim) {
+MassScalingReport mass_scaling_report(const Simulation& sim, const std::optional<CuttingParameters>& cutting) {
   const Scene& s = sim.scene();
   MassScalingReport r;
   r.factor = sim.mass_scaling_factor();
   r.target_time_step_s = s.solver.mass_scaling_target_time_step;
-  if (s.cutting) {
-    r.reference_speed_m_per_s = s.cutting->cutting_speed;
+  if (cutting) {
+    r.reference_speed_m_per_s = cutting->cutting_speed;
   } else {
     for (const auto& b : s.rigid_bodies) r.reference_speed_m_per_s = std::max(r.reference_speed_m_per_s, b.velocity.norm());
     for (const auto& b : s.bodies) r.reference_speed_m_per_s = std::max(r.reference_speed_m_per_s, b.velocity.norm());

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "solver/simulation.hpp"
+#include "cutting/cutting_parameters.hpp"
 
 namespace mpmcut {
 
@@ -19,7 +20,8 @@ struct MassScalingReport {
   std::optional<std::string> warning;  // when the scaled inertia may change the answer
 };
 
-MassScalingReport mass_scaling_report(const Simulation& sim);
+// `cutting`: the process of a cut, whose cutting speed is the reference speed.
+MassScalingReport mass_scaling_report(const Simulation& sim, const std::optional<CuttingParameters>& cutting);
 nlohmann::json to_json(const MassScalingReport& r);
 // One console line ("mass scaling: ..."); empty when the run has no mass scaling and no warning.
 std::string console_line(const MassScalingReport& r);

@@ -16,6 +16,7 @@
 #include "io/checkpoint.hpp"
 #include "io/input_error.hpp"
 #include "io/result_directory.hpp"
+#include "cutting/cutting_case.hpp"
 #include "run/case_loading.hpp"
 #include "run/case_run.hpp"
 #include "run/run_summary.hpp"
@@ -40,8 +41,8 @@ struct IgnoreFileSizeSignal {
 };
 
 // Writes the expanded scene; a failure is an output error.
-void write_expanded_scene(const Scene& scene, const fs::path& root) {
-  write_file_atomically(root / "scene.toml", [&](std::ostream& out) { write_scene(scene, out); });
+void write_expanded_scene(const Case& c, const fs::path& root) {
+  write_file_atomically(root / "scene.toml", [&](std::ostream& out) { write_scene(c, out); });
 }
 
 }  // namespace
@@ -54,11 +55,11 @@ int set_threads(int requested) {
 
 // ---------------------------------------------------------------------------------------------
 
-std::unique_ptr<CaseRun> open_run(const Scene& scene, const RunOptions& options) {
+std::unique_ptr<CaseRun> open_run(const Case& c, const RunOptions& options) {
   // Before the result directory and the first large allocation: a run that cannot fit in memory
   // or cannot finish is the user's input error, not a crash or a hang later.
   try {
-    check_run_fits(scene);
+    check_run_fits(c.scene, run_size_keys(c));
   } catch (const InputError& e) {
     throw RunOpenError(e.what(), kExitInputError);
   }
@@ -66,14 +67,14 @@ std::unique_ptr<CaseRun> open_run(const Scene& scene, const RunOptions& options)
   fs::path root;
   try {
     root = ResultDirectory::open(options.out_dir, options.force).root();
-    write_expanded_scene(scene, root);
+    write_expanded_scene(c, root);
   } catch (const std::exception& e) {
     throw RunOpenError(e.what(), kExitOutputError);
   }
   std::unique_ptr<CaseRun> run;
   try {
-    run = std::make_unique<CaseRun>(scene, root, options, threads);
-    write_summary(root / "summary.json", summarize(run->simulation(), run_status::running, 0.0, "", threads));
+    run = std::make_unique<CaseRun>(c, root, options, threads);
+    write_summary(root / "summary.json", summarize(run->simulation(), c.cutting, run_status::running, 0.0, "", threads));
     run->start();
   } catch (const std::invalid_argument& e) {  // a scene the solver cannot build
     throw RunOpenError(e.what(), kExitInputError);
@@ -83,11 +84,11 @@ std::unique_ptr<CaseRun> open_run(const Scene& scene, const RunOptions& options)
   return run;
 }
 
-int run_case(const Scene& scene, const RunOptions& options) {
+int run_case(const Case& c, const RunOptions& options) {
   IgnoreFileSizeSignal file_size_signal;
   std::unique_ptr<CaseRun> run;
   try {
-    run = open_run(scene, options);
+    run = open_run(c, options);
   } catch (const RunOpenError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return e.exit_code;
@@ -95,11 +96,11 @@ int run_case(const Scene& scene, const RunOptions& options) {
   return run->run_to_end();
 }
 
-ExistingRun existing_run(const fs::path& dir, const Scene& scene) {
+ExistingRun existing_run(const fs::path& dir, const Case& c) {
   std::error_code ec;
   if (!fs::exists(dir / "scene.toml", ec) || !fs::exists(dir / "summary.json", ec)) return ExistingRun::None;
   std::ostringstream expected;
-  write_scene(scene, expected);
+  write_scene(c, expected);
   std::ifstream in(dir / "scene.toml", std::ios::binary);
   const std::string found((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (found != expected.str()) return ExistingRun::None;
@@ -136,9 +137,9 @@ std::unique_ptr<CaseRun> open_resumed_run(const RunOptions& options) {
   if (status == run_status::failed)
     std::cerr << "note: the run had failed (see summary.json \"message\"); continuing from its last checkpoint\n";
 
-  Scene scene;
+  Case resumed_case;
   try {
-    scene = load_scene(root / "scene.toml");
+    resumed_case = load_case(root / "scene.toml");
   } catch (const InputError& e) {
     throw refuse(e.what());
   }
@@ -153,14 +154,14 @@ std::unique_ptr<CaseRun> open_resumed_run(const RunOptions& options) {
   if (!loaded->rejected.empty())
     std::cerr << "warning: falling back to the previous valid checkpoint '" << loaded->file.string() << "'\n";
   Checkpoint& c = loaded->checkpoint;
-  if (c.scene_hash != scene_hash(scene)) {
+  if (c.scene_hash != scene_hash(resumed_case)) {
     throw refuse(fmt::format("scene.toml differs from the scene that checkpoint '{}' was written with, so this "
                               "would not continue the same run. Restore the original scene.toml or start a new run",
                               loaded->file.string()));
   }
-  scene.source_file = c.loop.case_file;
+  resumed_case.scene.source_file = c.loop.case_file;
   try {
-    check_run_fits(scene);  // the machine resuming may have less memory than the one that started
+    check_run_fits(resumed_case.scene, run_size_keys(resumed_case));  // the machine resuming may have less memory than the one that started
   } catch (const InputError& e) {
     throw refuse(e.what());
   }
@@ -174,9 +175,10 @@ std::unique_ptr<CaseRun> open_resumed_run(const RunOptions& options) {
 
   std::unique_ptr<CaseRun> run;
   try {
-    run = std::make_unique<CaseRun>(scene, root, resumed, threads);
+    run = std::make_unique<CaseRun>(resumed_case, root, resumed, threads);
     run->resume(std::move(c), loaded->file);
-    write_summary(root / "summary.json", summarize(run->simulation(), run_status::running, 0.0, "", threads));
+    write_summary(root / "summary.json",
+                  summarize(run->simulation(), resumed_case.cutting, run_status::running, 0.0, "", threads));
   } catch (const CheckpointError& e) {
     throw refuse(e.what());
   } catch (const std::invalid_argument& e) {

@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "solver/scene.hpp"
+#include "cutting/case.hpp"
 #include "run/case_run.hpp"
 #include "run/run_options.hpp"
 
@@ -22,20 +22,20 @@ struct RunOpenError : std::runtime_error {
 
 // A new run in options.out_dir, ready to step: the memory and step check, the result directory,
 // scene.toml, a "running" summary.json and the outputs at t = 0. Throws RunOpenError.
-std::unique_ptr<CaseRun> open_run(const Scene& scene, const RunOptions& options);
+std::unique_ptr<CaseRun> open_run(const Case& c, const RunOptions& options);
 
 // The stopped run in options.out_dir, continued from its newest valid checkpoint (scene from its
 // scene.toml; warnings about skipped checkpoints go to stderr). Throws RunOpenError.
 std::unique_ptr<CaseRun> open_resumed_run(const RunOptions& options);
 
-// Runs `scene`; returns one of ExitCode. Messages go to stderr.
-int run_case(const Scene& scene, const RunOptions& options);
+// Runs `c`; returns one of ExitCode. Messages go to stderr.
+int run_case(const Case& c, const RunOptions& options);
 
 // What a result directory holds for `scene` (studies rerun with `run --keep-complete`: a complete run
 // of the same scene is kept, an unfinished one with a checkpoint is resumed, anything else is rerun).
 // "The same scene" = its scene.toml is byte for byte what this scene writes.
 enum class ExistingRun { None, Complete, Resumable };
-ExistingRun existing_run(const std::filesystem::path& dir, const Scene& scene);
+ExistingRun existing_run(const std::filesystem::path& dir, const Case& c);
 
 // Continues the run in options.out_dir from its newest valid checkpoint (scene from its
 // scene.toml); returns one of ExitCode.

@@ -59,11 +59,12 @@ long snapshot_index(const std::string& file_name) {
   return std::stol(digits);
 }
 
-RunOutputs::RunOutputs(const fs::path& root, Simulation& sim, bool resume)
+RunOutputs::RunOutputs(const fs::path& root, Simulation& sim, const std::optional<CuttingParameters>& cutting,
+                       bool resume)
     : root_(root),
       sim_(sim),
       history_(root / "history.csv", history_columns(), resume ? CsvWriter::Mode::Append : CsvWriter::Mode::Create) {
-  observers_ = make_scene_observers(sim.scene(), root, resume);
+  observers_ = make_scene_observers(sim.scene(), cutting, root, resume);
   if (!sim.rigid_bodies().empty())
     rigid_.emplace(root / "rigid_forces.csv", rigid_force_columns(sim),
                    resume ? CsvWriter::Mode::Append : CsvWriter::Mode::Create);

@@ -10,6 +10,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "cutting/cutting_parameters.hpp"
 #include "io/checkpoint.hpp"
 #include "io/csv_writer.hpp"
 #include "io/pvd_writer.hpp"
@@ -26,7 +27,9 @@ long snapshot_index(const std::string& file_name);  // NNNNNN of "particles_NNNN
 class RunOutputs {
  public:
   // With `resume` the CSV files are opened for appending (the caller has cut them back already).
-  RunOutputs(const std::filesystem::path& root, Simulation& sim, bool resume);
+  // `cutting`: the process of a cut (cutting/case.hpp), which adds its observers.
+  RunOutputs(const std::filesystem::path& root, Simulation& sim, const std::optional<CuttingParameters>& cutting,
+             bool resume);
 
   void after_step();
   void history_row();

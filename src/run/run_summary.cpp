@@ -77,8 +77,8 @@ std::optional<double> section_number(const json& sections, const char* section, 
 
 }  // namespace
 
-RunSummary summarize(const Simulation& sim, const std::string& status, double wall_s, const std::string& message,
-                     int threads) {
+RunSummary summarize(const Simulation& sim, const std::optional<CuttingParameters>& cutting, const std::string& status,
+                     double wall_s, const std::string& message, int threads) {
   RunSummary s;
   s.status = status;
   s.message = message;
@@ -104,7 +104,7 @@ RunSummary summarize(const Simulation& sim, const std::string& status, double wa
   s.energy_relative_residual =
       s.energy_residual_J_per_m / std::max(std::abs(e.initial) + std::abs(e.external_work), 1e-300);
   s.max_temperature_K = sim.max_temperature();
-  s.sections["mass_scaling"] = to_json(mass_scaling_report(sim));
+  s.sections["mass_scaling"] = to_json(mass_scaling_report(sim, cutting));
   for (const auto& r : sim.rigid_bodies())
     s.rigid_bodies.push_back({r.name, r.force, r.impulse, r.displacement, r.work});
   if (sim.removed_particles() > 0) {

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/tensor.hpp"
+#include "cutting/cutting_parameters.hpp"
 #include "io/json_summary.hpp"
 
 namespace mpmcut {
@@ -60,9 +61,10 @@ struct RunSummary {
   bool is_cutting_run() const { return sections.contains("cutting"); }
 };
 
-// The part of the summary the run itself knows from the simulation state.
-RunSummary summarize(const Simulation& sim, const std::string& status, double wall_s, const std::string& message,
-                     int threads);
+// The part of the summary the run itself knows from the simulation state (`cutting`: the process
+// of a cut, cutting/case.hpp).
+RunSummary summarize(const Simulation& sim, const std::optional<CuttingParameters>& cutting, const std::string& status,
+                     double wall_s, const std::string& message, int threads);
 
 nlohmann::json to_json(const RunSummary& s);
 // Throws std::runtime_error naming the key when a typed key has the wrong type.

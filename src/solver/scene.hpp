@@ -1,13 +1,13 @@
 #pragma once
 // The scene: plain data that fully describes a run. Parsing (TOML) produces it, the cutting preset
-// produces it, the solver consumes it. The solver never sees TOML.
+// produces it, the solver consumes it. The solver never sees TOML, nor the cutting process a scene
+// may stand for (cutting/case.hpp pairs the two).
 // All quantities SI unless the name says otherwise.
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "core/scene_specs.hpp"
-#include "cutting/cutting_parameters.hpp"
 #include "physics/material_parameters.hpp"
 
 namespace mpmcut {
@@ -24,9 +24,6 @@ struct Scene {
   std::vector<MaterialParameters> materials;
   std::vector<BodySpec> bodies;
   std::vector<RigidBodySpec> rigid_bodies;
-  // Set when the scene was built by the cutting preset: the process it stands for (the solver
-  // ignores it; the cutting outputs read it). The tool is rigid_bodies[0].
-  std::optional<CuttingParameters> cutting;
 
   // Index of the material called `name`, or -1.
   int material_index(const std::string& name) const;

@@ -17,9 +17,7 @@ ORDER = ["core", "physics", "contact", "thermal", "solver", "io", "cutting", "an
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([a-z_]+)/', re.MULTILINE)
 
 # (file, the layer it includes): crossings to remove (issue 13), not to add to.
-KNOWN = {
-    ("src/solver/scene.hpp", "cutting"),        # the scene carries the cutting process it was built from
-}
+KNOWN = set()
 
 
 def crossings():

@@ -77,14 +77,14 @@ class CheckpointFormat : public ::testing::Test {
   void SetUp() override {
     file_ = fs::temp_directory_path() / ("mpmcut_checkpoint_format_" + std::to_string(::getpid()) + "_" +
                                          ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".bin");
-    scene_ = parse_scene(kCase, "test.toml");
+    scene_ = parse_case(kCase, "test.toml").scene;
   }
   void TearDown() override { fs::remove(file_); }
 
   std::string bytes_after(int steps, RunLoopState loop = {}) {
     Simulation sim(scene_);
     for (int k = 0; k < steps; ++k) sim.step();
-    write_checkpoint_file(file_, sim, scene_hash(scene_), loop);
+    write_checkpoint_file(file_, sim, scene_hash(Case{scene_}), loop);
     std::ifstream in(file_, std::ios::binary);
     std::stringstream s;
     s << in.rdbuf();
@@ -108,10 +108,10 @@ TEST_F(CheckpointFormat, RestoredSimulationContinuesBitIdentically) {
   loop.files = {{"history.csv", 12345}};
   loop.observer_states = {std::string("\0\1\2", 3)};
   loop.case_file = "case.toml";
-  write_checkpoint_file(file_, straight, scene_hash(scene_), loop);
+  write_checkpoint_file(file_, straight, scene_hash(Case{scene_}), loop);
   Checkpoint c = read_checkpoint_file(file_);
   EXPECT_EQ(c.state.step, 23);
-  EXPECT_EQ(c.scene_hash, scene_hash(scene_));
+  EXPECT_EQ(c.scene_hash, scene_hash(Case{scene_}));
   EXPECT_EQ(c.loop.snapshot_count, 3);
   EXPECT_EQ(c.loop.next_snapshot_s, 1.25e-7);
   ASSERT_EQ(c.loop.pvd.size(), 2u);
@@ -190,15 +190,15 @@ TEST_F(CheckpointFormat, MessagesSayWhatIsWrong) {
 
 TEST_F(CheckpointFormat, SceneHashTellsScenesApart) {
   Scene other = scene_;
-  EXPECT_EQ(scene_hash(other), scene_hash(scene_));
+  EXPECT_EQ(scene_hash(Case{other}), scene_hash(Case{scene_}));
   other.source_file = "elsewhere.toml";  // where it came from does not matter
-  EXPECT_EQ(scene_hash(other), scene_hash(scene_));
+  EXPECT_EQ(scene_hash(Case{other}), scene_hash(Case{scene_}));
   other.solver.cfl = 0.3;
-  EXPECT_NE(scene_hash(other), scene_hash(scene_));
+  EXPECT_NE(scene_hash(Case{other}), scene_hash(Case{scene_}));
 }
 
 TEST_F(CheckpointFormat, RestoreRefusesAnotherScene) {
-  write_checkpoint_file(file_, Simulation(scene_), scene_hash(scene_), {});
+  write_checkpoint_file(file_, Simulation(scene_), scene_hash(Case{scene_}), {});
   Scene no_punch = scene_;
   no_punch.rigid_bodies.clear();
   Simulation sim(no_punch);

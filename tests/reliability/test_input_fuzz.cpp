@@ -112,14 +112,14 @@ void leaves(const toml::table& t, const std::string& prefix, std::set<std::strin
 std::set<std::string> input_surface(const fs::path& file) {
   std::set<std::string> keys;
   leaves(toml::parse_file(file.string()), "", keys);
-  const Scene scene = load_scene(file);
+  const Case c = load_case(file);
   std::ostringstream expanded;
-  write_scene(scene, expanded);
+  write_scene(c, expanded);
   std::set<std::string> all;
   leaves(toml::parse(expanded.str()), "", all);
-  if (scene.cutting) {
+  if (c.cutting) {
     std::ostringstream preset;
-    write_cutting_parameters(*scene.cutting, preset, "cutting");
+    write_cutting_parameters(*c.cutting, preset, "cutting");
     leaves(toml::parse(preset.str()), "", keys);
     keys.insert("cutting.cutting_speed_m_per_min");
     for (const std::string& k : all)

@@ -10,7 +10,7 @@ namespace mpmcut::testing {
 
 inline std::string parse_error_of(const std::string& text, const std::vector<std::string>& overrides = {}) {
   try {
-    parse_scene(text, "case.toml", overrides);
+    parse_case(text, "case.toml", overrides);
   } catch (const InputError& e) {
     return e.what();
   }

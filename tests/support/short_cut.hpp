@@ -67,7 +67,7 @@ inline CutResult run_cut(const CuttingParameters& c, const MaterialParameters& m
       impulse_at_start = sim.rigid_bodies()[0].impulse;
     }
     if (sim.time() >= next_sample * (1 - 1e-12)) {
-      const ChipAnalysisSetup setup = chip_analysis_setup(scene, sim.rigid_bodies()[0].displacement, sim.time());
+      const ChipAnalysisSetup setup = chip_analysis_setup(scene, c, sim.rigid_bodies()[0].displacement, sim.time());
       if (auto r = analyze_chip(sim.particles(), setup).chip_thickness_ratio) {
         ratio_sum += *r;
         ++ratio_count;

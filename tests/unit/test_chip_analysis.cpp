@@ -161,9 +161,9 @@ TEST(ChipAnalysis, NoChipAndJsonKeys) {
   EXPECT_TRUE(temperature_json(a)["primary_shear_zone"]["max_K"].is_null());
 }
 
-TEST(ChipAnalysis, SetupNeedsACuttingScene) {
+TEST(ChipAnalysis, SetupNeedsTheWorkpieceAndTheTool) {
   Scene scene;
-  EXPECT_THROW(chip_analysis_setup(scene, Vec2::Zero(), 0.0), std::invalid_argument);
+  EXPECT_THROW(chip_analysis_setup(scene, CuttingParameters{}, Vec2::Zero(), 0.0), std::invalid_argument);
 }
 
 TEST(ChipAnalysis, AnalyzeCommandRefusesWhatIsNotACuttingResult) {

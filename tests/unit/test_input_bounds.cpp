@@ -37,7 +37,7 @@ std::string error_of(const std::string& text, const std::vector<std::string>& ov
 
 std::string cutting_error(const std::vector<std::string>& overrides) {
   try {
-    default_cutting_scene(overrides);
+    default_cutting_case(overrides);
   } catch (const InputError& e) {
     return e.what();
   }
@@ -96,7 +96,7 @@ TEST(InputBounds, UpperBoundsOfLengthsSpeedsFactorsAndMaterials) {
 }
 
 TEST(InputBounds, MemoryEstimateRefusesWhatDoesNotFit) {
-  const Scene scene = parse_scene(kDisk, "case.toml", {"grid.cell_size=1e-4"});
+  const Scene scene = parse_case(kDisk, "case.toml", {"grid.cell_size=1e-4"}).scene;
   const RunEstimate e = estimate_run(scene);
   // 20 000 x 20 000 cells; the disk of radius 0.3 at 2 particles per cell: pi 0.09 / (5e-5)^2.
   EXPECT_NEAR(e.grid_nodes, 20007.0 * 20007.0, 1.0);
@@ -112,18 +112,18 @@ TEST(InputBounds, MemoryEstimateRefusesWhatDoesNotFit) {
   }
   EXPECT_NO_THROW(check_run_fits(scene, e, 1e12));
   // The real machine: the estimate of a shipped-size case fits.
-  EXPECT_NO_THROW(check_run_fits(parse_scene(kDisk, "case.toml", {})));
+  EXPECT_NO_THROW(check_run_fits(parse_case(kDisk, "case.toml", {}).scene));
 }
 
 TEST(InputBounds, StepEstimateRefusesRunsThatCannotFinish) {
   // Steps land on every output time: a tiny snapshot interval is a tiny step.
-  const Scene tiny = parse_scene(kDisk, "case.toml", {"output.snapshot_interval=1e-300"});
+  const Scene tiny = parse_case(kDisk, "case.toml", {"output.snapshot_interval=1e-300"}).scene;
   EXPECT_GT(estimate_run(tiny).steps, kMaxSteps);
   EXPECT_THROW(check_run_fits(tiny, estimate_run(tiny), 1e12), InputError);
-  const Scene fixed = parse_scene(kDisk, "case.toml", {"solver.fixed_time_step=1e-12", "solver.end_time=1"});
+  const Scene fixed = parse_case(kDisk, "case.toml", {"solver.fixed_time_step=1e-12", "solver.end_time=1"}).scene;
   EXPECT_THROW(check_run_fits(fixed, estimate_run(fixed), 1e12), InputError);
   // max_steps caps the count.
-  const Scene capped = parse_scene(kDisk, "case.toml", {"solver.fixed_time_step=1e-12", "solver.max_steps=10"});
+  const Scene capped = parse_case(kDisk, "case.toml", {"solver.fixed_time_step=1e-12", "solver.max_steps=10"}).scene;
   EXPECT_EQ(estimate_run(capped).steps, 10.0);
   EXPECT_NO_THROW(check_run_fits(capped, estimate_run(capped), 1e12));
 }

@@ -47,12 +47,12 @@ TEST(MassScalingInput, AutomaticFactorReachesTheTargetInertiaNumber) {
 }
 
 TEST(MassScalingInput, CuttingPresetWritesTheFactorIntoTheSolver) {
-  const Scene automatic = parse_scene(kCut, "case.toml");
+  const Scene automatic = parse_case(kCut, "case.toml").scene;
   EXPECT_NEAR(automatic.solver.mass_scaling_factor, 2e-3 * 862e6 / 4430.0, 1e-6);
-  EXPECT_EQ(parse_scene(kCut, "case.toml", {"cutting.mass_scaling=\"off\""}).solver.mass_scaling_factor, 1.0);
-  EXPECT_EQ(parse_scene(kCut, "case.toml", {"cutting.mass_scaling=40"}).solver.mass_scaling_factor, 40.0);
+  EXPECT_EQ(parse_case(kCut, "case.toml", {"cutting.mass_scaling=\"off\""}).scene.solver.mass_scaling_factor, 1.0);
+  EXPECT_EQ(parse_case(kCut, "case.toml", {"cutting.mass_scaling=40"}).scene.solver.mass_scaling_factor, 40.0);
   // [solver] has the last word.
-  EXPECT_EQ(parse_scene(kCut + "[solver]\nmass_scaling_factor = 7\n", "case.toml").solver.mass_scaling_factor, 7.0);
+  EXPECT_EQ(parse_case(kCut + "[solver]\nmass_scaling_factor = 7\n", "case.toml").scene.solver.mass_scaling_factor, 7.0);
 }
 
 TEST(MassScalingInput, BadValuesNameTheKeyAndTheRange) {

@@ -202,11 +202,11 @@ class ParticleFieldFiles : public ::testing::Test {
 };
 
 TEST_F(ParticleFieldFiles, CheckpointRoundTripsEveryCheckpointedFieldBitExact) {
-  const Scene scene = parse_scene(kElasticBlock, "fields.toml");
+  const Scene scene = parse_case(kElasticBlock, "fields.toml").scene;
   Simulation sim(scene);
   const std::size_t n = 17;
   sim.particles() = filled(n);
-  write_checkpoint_file(dir_ / "c.bin", sim, scene_hash(scene), RunLoopState{});
+  write_checkpoint_file(dir_ / "c.bin", sim, scene_hash(Case{scene}), RunLoopState{});
   const Checkpoint c = read_checkpoint_file(dir_ / "c.bin");
   expect_rows(c.particles, n, [](std::size_t at) { return at; }, kCheckpoint);
   // Every checkpointed field has its own section (u32 name length | name) under its registered name.
@@ -246,9 +246,9 @@ std::string without_section(const std::string& bytes, const std::string& name) {
 }
 
 TEST_F(ParticleFieldFiles, CheckpointWithoutAFieldIsRefusedByItsName) {
-  const Scene scene = parse_scene(kElasticBlock, "fields.toml");
+  const Scene scene = parse_case(kElasticBlock, "fields.toml").scene;
   Simulation sim(scene);
-  write_checkpoint_file(dir_ / "c.bin", sim, scene_hash(scene), RunLoopState{});
+  write_checkpoint_file(dir_ / "c.bin", sim, scene_hash(Case{scene}), RunLoopState{});
   const std::string bytes = text_of(dir_ / "c.bin");
   ASSERT_NO_THROW(decode_checkpoint(without_section(bytes, "no such section"), "resealed"));
   for_each_particle_field([&](const auto& f) {

@@ -15,12 +15,12 @@
 namespace mpmcut {
 namespace {
 
-Scene block() { return load_scene(std::string(MPMCUT_TEST_DIR) + "/support/cases/elastic_block.toml"); }
+Scene block() { return load_case(std::string(MPMCUT_TEST_DIR) + "/support/cases/elastic_block.toml").scene; }
 
 TEST(RunSummary, WhatTheRunWritesReadsBackKeyForKey) {
   Simulation sim(block());
   for (int k = 0; k < 5; ++k) sim.step();
-  const RunSummary s = summarize(sim, run_status::complete, 2.0, "", 1);
+  const RunSummary s = summarize(sim, std::nullopt, run_status::complete, 2.0, "", 1);
   EXPECT_EQ(s.steps, 5);
   EXPECT_EQ(s.particles, sim.particles().size());
   EXPECT_DOUBLE_EQ(s.particle_steps_per_s, s.particles * 5 / 2.0);
@@ -57,7 +57,7 @@ TEST(RunSummary, WhatTheRunWritesReadsBackKeyForKey) {
 
 TEST(RunSummary, FileRoundTripAndWrongTypesAreNamed) {
   Simulation sim(block());
-  RunSummary s = summarize(sim, run_status::failed, 0.0, "it broke", 2);
+  RunSummary s = summarize(sim, std::nullopt, run_status::failed, 0.0, "it broke", 2);
   s.last_checkpoint = "checkpoints/checkpoint_000001.bin";
   const std::filesystem::path file = std::filesystem::temp_directory_path() /
                                        ("mpmcut_test_run_summary_" + std::to_string(::getpid()) + ".json");

@@ -1,6 +1,6 @@
 // Case file -> Scene (docs/input.md): the shipped cases parse, every validation rule gives an
 // InputError naming file:line:column and the key, --set overrides, library sets with per-key
-// overrides, and write_scene -> parse_scene round trips.
+// overrides, and write_scene -> parse_case round trips.
 #include <gtest/gtest.h>
 
 #include "../support/parse_errors.hpp"
@@ -21,6 +21,13 @@ namespace mpmcut {
 
 namespace {
 
+// The scene of a case: most tests here are about the scene tables (the cutting process a case may
+// carry is checked where it matters, see SceneWriter and the cutting_speed tests).
+Scene parse_scene(std::string_view text, const std::string& name, const std::vector<std::string>& overrides = {}) {
+  return parse_case(text, name, overrides).scene;
+}
+Scene load_scene(const std::filesystem::path& file) { return load_case(file).scene; }
+
 // Field-wise equality of everything a case file describes. (Scene::cutting, set only by the
 // cutting preset, is not part of the case-file format.) On failure prints both as TOML.
 void expect_same_scene(const Scene& a, const Scene& b) {
@@ -30,8 +37,8 @@ void expect_same_scene(const Scene& a, const Scene& b) {
                     a.bodies == b.bodies && a.rigid_bodies == b.rigid_bodies;
   if (same) return;
   std::ostringstream ta, tb;
-  write_scene(a, ta);
-  write_scene(b, tb);
+  write_scene(Case{a}, ta);
+  write_scene(Case{b}, tb);
   ADD_FAILURE() << "scenes differ:\n" << ta.str() << "\n--- versus ---\n" << tb.str();
 }
 
@@ -162,7 +169,7 @@ TEST(SceneParser, VibratingBarIsFixedFree) {
 }
 
 TEST(SceneParser, BuiltInDemoIsTheShippedCaseAndSmall) {
-  Scene builtin = default_elastic_demo_scene();
+  Scene builtin = default_elastic_demo_case().scene;
   Scene shipped = load_scene(kCases / "elastic_demo.toml");
   builtin.source_file = shipped.source_file;
   expect_same_scene(builtin, shipped);
@@ -172,7 +179,7 @@ TEST(SceneParser, BuiltInDemoIsTheShippedCaseAndSmall) {
   const double particles = std::numbers::pi * b.shape.disk.radius * b.shape.disk.radius / (spacing * spacing);
   EXPECT_GT(particles, 2000.0);
   EXPECT_LT(particles, 5000.0);
-  EXPECT_DOUBLE_EQ(default_elastic_demo_scene({"solver.end_time=0.1"}).solver.end_time, 0.1);
+  EXPECT_DOUBLE_EQ(default_elastic_demo_case({"solver.end_time=0.1"}).scene.solver.end_time, 0.1);
 }
 
 TEST(SceneParser, IntegersAreAcceptedAsNumbers) {
@@ -448,20 +455,22 @@ TEST(SceneShapes, ContainTheRightPoints) {
 
 // --- writer -----------------------------------------------------------------------------------
 
-Scene round_trip(const Scene& s) {
+Case round_trip(const Case& c) {
   std::ostringstream out;
-  write_scene(s, out);
-  Scene back = parse_scene(out.str(), s.source_file);
-  return back;
+  write_scene(c, out);
+  return parse_case(out.str(), c.scene.source_file);
 }
+Scene round_trip(const Scene& s) { return round_trip(Case{s}).scene; }
 
 TEST(SceneWriter, RoundTripsEveryShippedCase) {
   for (const auto& entry : std::filesystem::recursive_directory_iterator(kCases)) {
     if (entry.path().extension() != ".toml") continue;
     if (entry.path().parent_path().filename() == "calibration") continue;  // mpmcut calibrate configs, not cases
     SCOPED_TRACE(entry.path().string());
-    const Scene s = load_scene(entry.path());
-    expect_same_scene(round_trip(s), s);
+    const Case c = load_case(entry.path());
+    const Case back = round_trip(c);
+    expect_same_scene(back.scene, c.scene);
+    EXPECT_EQ(back.cutting, c.cutting);  // the [cutting_process] record of a cut
   }
 }
 
@@ -515,10 +524,10 @@ rounding_radius = 0.05
 TEST(SceneOverrides, CuttingSpeedReplacesTheOtherSpelling) {
   const std::string cut = "[cutting]\nmaterial = \"ti64-johnson-1985\"\ncutting_speed_m_per_min = 100.0\n"
                           "uncut_chip_thickness = 0.1e-3\ncut_length = 0.1e-3\ncell_size = 20e-6\n";
-  EXPECT_DOUBLE_EQ(parse_scene(cut, "case.toml", {"cutting.cutting_speed=5"}).cutting->cutting_speed, 5.0);
+  EXPECT_DOUBLE_EQ(parse_case(cut, "case.toml", {"cutting.cutting_speed=5"}).cutting->cutting_speed, 5.0);
   const std::string si = "[cutting]\nmaterial = \"ti64-johnson-1985\"\ncutting_speed = 2.0\n"
                          "uncut_chip_thickness = 0.1e-3\ncut_length = 0.1e-3\ncell_size = 20e-6\n";
-  EXPECT_DOUBLE_EQ(parse_scene(si, "case.toml", {"cutting.cutting_speed_m_per_min=120"}).cutting->cutting_speed, 2.0);
+  EXPECT_DOUBLE_EQ(parse_case(si, "case.toml", {"cutting.cutting_speed_m_per_min=120"}).cutting->cutting_speed, 2.0);
   // Both in the file itself is still an error.
   EXPECT_NE(error_of(si + "cutting_speed_m_per_min = 120\n").find("not both"), std::string::npos);
 }

@@ -38,7 +38,7 @@ TEST(ValidationResolution, CaseFileCellSizeFollowsTheRule) {
     c.speed_m_per_s = 5.0;
     c.h_mm = h_mm;
     c.edge_radius_um = r_um;
-    return parse_scene(condition_case_text(c, s), "test.toml").cutting->cell_size;
+    return parse_case(condition_case_text(c, s), "test.toml").cutting->cell_size;
   };
   EXPECT_NEAR(cell_of("forces", 0.01, 39.8), 1e-6, 1e-12);
   EXPECT_NEAR(cell_of("forces", 0.2, 38.8), 9.7e-6, 1e-12);

@@ -43,7 +43,7 @@ struct Ledger {
 };
 
 Ledger run(const std::vector<std::string>& overrides) {
-  Simulation sim(parse_scene(kObliqueImpact, "oblique_impact.toml", overrides));
+  Simulation sim(parse_case(kObliqueImpact, "oblique_impact.toml", overrides).scene);
   const double end = sim.scene().solver.end_time;
   while (sim.time() < end * (1 - 1e-12)) sim.step(end - sim.time());
   sim.refresh_energy();
