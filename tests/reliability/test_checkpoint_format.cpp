@@ -197,6 +197,16 @@ TEST_F(CheckpointFormat, SceneHashTellsScenesApart) {
   EXPECT_NE(scene_hash(Case{other}), scene_hash(Case{scene_}));
 }
 
+TEST_F(CheckpointFormat, SceneHashTellsCuttingProcessesApart) {
+  // The process travels beside the scene (cutting/case.hpp), but scene.toml records it, so the hash
+  // that a resume checks covers it: a resume must not continue a cut at another speed.
+  const Case cut{scene_, CuttingParameters{}};
+  EXPECT_NE(scene_hash(cut), scene_hash(Case{scene_}));
+  Case faster = cut;
+  faster.cutting->cutting_speed = cut.cutting->cutting_speed + 10.0;
+  EXPECT_NE(scene_hash(faster), scene_hash(cut));
+}
+
 TEST_F(CheckpointFormat, RestoreRefusesAnotherScene) {
   write_checkpoint_file(file_, Simulation(scene_), scene_hash(Case{scene_}), {});
   Scene no_punch = scene_;
