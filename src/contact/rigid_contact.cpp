@@ -7,6 +7,20 @@
 
 namespace mpmcut {
 
+namespace {
+
+// The momentum `impulse` the material received from a rigid body this step (and the body's
+// `work` on it): the reaction is the force on the body; its work is external work on the material.
+void book_contact_impulse(RigidBodyState& body, const Vec2& impulse, double work, double dt, EnergyTotals& energy) {
+  body.step_impulse -= impulse;
+  body.force = body.step_impulse / dt;
+  body.impulse -= impulse;
+  body.work += work;
+  energy.external_work += work;
+}
+
+}  // namespace
+
 RigidContact::RigidContact(const std::vector<RigidBodySpec>& bodies, const RigidContactSettings& settings)
     : settings_(settings) {
   for (const RigidBodySpec& r : bodies) {
@@ -141,11 +155,7 @@ void RigidContact::apply(ContactPass pass, double dt, Grid& G, std::vector<Rigid
       }
     }
     if (accumulate_force) {
-      bodies[r].step_impulse -= impulse;
-      bodies[r].force = bodies[r].step_impulse / dt;
-      bodies[r].impulse -= impulse;
-      bodies[r].work += work;
-      energy.external_work += work;
+      book_contact_impulse(bodies[r], impulse, work, dt, energy);
       energy.friction += friction_work;
     }
   }
@@ -196,11 +206,7 @@ void RigidContact::push_particles_out(Particles& P, std::vector<Vec2>& position_
       }
       ++pushed_out_;
     }
-    bodies[r].step_impulse -= impulse;
-    bodies[r].force = bodies[r].step_impulse / dt;
-    bodies[r].impulse -= impulse;
-    bodies[r].work += work;
-    energy.external_work += work;
+    book_contact_impulse(bodies[r], impulse, work, dt, energy);
     energy.contact_safeguard += lost;
   }
 }
