@@ -20,8 +20,8 @@ double deposit_frictional_heat(Particles& P, const Grid& G, std::span<const Shap
     const Vec2 u = (P.position[p] - G.origin) / G.h;
     if (u.x() < lo.x() || u.x() > hi.x() || u.y() < lo.y() || u.y() > hi.y()) continue;
     double dT = 0.0;
-    for_each_stencil_node(G, particle_stencil(G, body_shapes, P, p), [&](int node, double w, const Vec2&) {
-      if (w != 0.0 && G.friction_heat[node] > 0.0) dT += w * G.friction_heat[node] / G.heat_capacity[node];
+    for_each_stencil_weight(G, particle_stencil(G, body_shapes, P, p), [&](int node, double w) {
+      if (G.friction_heat[node] > 0.0) dT += w * G.friction_heat[node] / G.heat_capacity[node];
     });
     const MaterialParameters& mat = materials[P.material[p]];
     if (mat.melting_temperature > 0.0) dT = std::clamp(mat.melting_temperature - P.temperature[p], 0.0, dT);

@@ -66,8 +66,7 @@ void RigidContact::compute_particle_weights(const Particles& P, const Grid& G, s
       const double phi = band > 0.0 ? std::clamp(1.0 - (d - lp) / band, 0.0, 1.0) : (d <= lp ? 1.0 : 0.0);
       if (phi <= 0.0) continue;
       const double m = inertia_factor * P.mass[p];  // as the grid mass it is compared with
-      for_each_stencil_node(G, stencil_at(G, shape, x), [&](int n, double w, const Vec2&) {
-        if (w == 0.0) return;
+      for_each_stencil_weight(G, stencil_at(G, shape, x), [&](int n, double w) {
         W[n] += w * m * phi;
         N[n] += (w * m * phi) * normal;
       });

@@ -17,9 +17,13 @@ double steady_window_start_travel(const CuttingParameters& c) {
   return std::max(c.steady_start_fraction * c.cut_length, std::min(3.0 * c.uncut_chip_thickness, 0.6 * c.cut_length));
 }
 
+double cutting_cell_size(const CuttingParameters& c) {
+  return c.cell_size > 0.0 ? c.cell_size : c.uncut_chip_thickness / 10.0;
+}
+
 Scene build_cutting_scene(const CuttingParameters& c, const MaterialParameters& material) {
   const double t0 = c.uncut_chip_thickness;
-  const double h = c.cell_size > 0.0 ? c.cell_size : t0 / 10.0;
+  const double h = cutting_cell_size(c);
   if (h > 0.5 * t0)
     throw std::invalid_argument(fmt::format(
         "cutting.cell_size = {:.3g} m is more than half the uncut chip thickness {:.3g} m: the chip would be one "

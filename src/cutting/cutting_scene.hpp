@@ -11,6 +11,9 @@ namespace mpmcut {
 // parameter when the combination cannot be built (e.g. a cell larger than the chip).
 Scene build_cutting_scene(const CuttingParameters& c, const MaterialParameters& material);
 
+// The grid's cell size: cutting.cell_size, or t0 / 10 when it is not given, m.
+double cutting_cell_size(const CuttingParameters& c);
+
 // The tool travel after which the chip is taken as formed (start of the steady window), m.
 double steady_window_start_travel(const CuttingParameters& c);
 

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "cutting/cutting_resolution.hpp"
 #include "run/case_loading.hpp"
 #include "run/mass_scaling_report.hpp"
 
@@ -89,6 +90,7 @@ void CaseRun::begin() {
   progress_.emplace(sim_.scene().solver.end_time, std::cerr,
                     options_.progress ? std::nullopt : std::optional<bool>(false));
   std::cerr << console_line(mass_scaling_report(sim_, cutting_));
+  if (cutting_) std::cerr << console_lines(cutting_resolution(*cutting_));
 }
 
 bool CaseRun::advance() {

@@ -14,6 +14,7 @@
 #include "core/deterministic_sum.hpp"
 #include "solver/grid_update.hpp"
 #include "solver/seeding.hpp"
+#include "solver/time_step_to_target.hpp"
 #include "solver/transfers.hpp"
 
 namespace mpmcut {
@@ -90,7 +91,7 @@ void Simulation::step(double max_dt) {
 
 double Simulation::begin_step(double max_dt) {
   parallel_ = particles_.size() >= parallel_min_particles_;
-  const double dt = std::min(stable_time_step(), max_dt);
+  const double dt = time_step_to_target(max_dt, stable_time_step());
   if (state_.step % 20 == 0) sort_particles_by_cell(particles_, grid_);
   conduct_now_ = conduction_.begin_step(state_.conduction, dt);
   return dt;

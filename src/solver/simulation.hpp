@@ -27,8 +27,9 @@ class Simulation {
  public:
   explicit Simulation(const Scene& scene);
 
-  // One explicit time step of at most max_dt (to land on output times); throws SimulationError
-  // from the guards.
+  // One explicit time step towards a time max_dt ahead (an output time): the stable step, or
+  // exactly max_dt when that is within it, or half of max_dt when that is within two stable steps
+  // (no sliver steps; solver/time_step_to_target.hpp). Throws SimulationError from the guards.
   void step(double max_dt = std::numeric_limits<double>::infinity());
 
   const Scene& scene() const { return scene_; }

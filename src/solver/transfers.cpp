@@ -42,8 +42,8 @@ void grid_to_particles(Particles& P, const Grid& G, std::span<const ShapeFunctio
 #pragma omp parallel for schedule(static) if (parallel)
   for (std::size_t p = 0; p < n; ++p) {
     Vec2 v_pic = Vec2::Zero(), dv = Vec2::Zero();
-    for_each_stencil_node(G, particle_stencil(G, body_shapes, P, p), [&](int node, double w, const Vec2&) {
-      if (w == 0.0) return;  // below, the node's mass is divided by: w > 0 means it has some
+    // Nodes with w > 0 only: below, the node's mass is divided by, and w > 0 means it has some.
+    for_each_stencil_weight(G, particle_stencil(G, body_shapes, P, p), [&](int node, double w) {
       v_pic += w * G.velocity_new[node];
       // FLIP increment from the raw P2G velocity, so the particles receive the contact and
       // boundary corrections of both passes: momentum given = contact impulse + f dt.
@@ -65,9 +65,7 @@ void remap_momentum_musl(const Particles& P, std::span<const ShapeFunction> body
   std::fill(G.momentum.begin(), G.momentum.end(), Vec2::Zero());
   colouring.for_each(parallel, [&](std::size_t p) {
     const Vec2 mv = inertia_factor * P.mass[p] * P.velocity[p];
-    for_each_stencil_node(G, particle_stencil(G, body_shapes, P, p), [&](int n, double w, const Vec2&) {
-      if (w != 0.0) G.momentum[n] += w * mv;
-    });
+    for_each_stencil_weight(G, particle_stencil(G, body_shapes, P, p), [&](int n, double w) { G.momentum[n] += w * mv; });
   });
   const std::size_t nn = G.node_count();
 #pragma omp parallel for schedule(static) if (parallel)
@@ -81,8 +79,8 @@ void update_velocity_gradients(Particles& P, const Grid& G, std::span<const Shap
 #pragma omp parallel for schedule(static) if (parallel)
   for (std::size_t p = 0; p < n; ++p) {
     Mat2 L = Mat2::Zero();
-    for_each_stencil_node(G, particle_stencil(G, body_shapes, P, p), [&](int node, double, const Vec2& grad) {
-      if (grad.x() == 0.0 && grad.y() == 0.0) return;  // (a zero term could flip the sign of a zero)
+    // Nodes with a non-zero gradient only (a zero term could flip the sign of a zero).
+    for_each_stencil_gradient(G, particle_stencil(G, body_shapes, P, p), [&](int node, const Vec2& grad) {
       L += G.velocity_new[node] * grad.transpose();
     });
     P.velocity_gradient[p] = L;

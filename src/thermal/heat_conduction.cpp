@@ -58,9 +58,7 @@ void conduct_heat(Particles& P, Grid& G, std::span<const ShapeFunction> body_sha
 #pragma omp parallel for schedule(static) if (parallel)
   for (std::size_t p = 0; p < n; ++p) {
     double inc = 0.0;
-    for_each_stencil_node(G, particle_stencil(G, body_shapes, P, p), [&](int node, double w, const Vec2&) {
-      if (w != 0.0) inc += w * dT[node];
-    });
+    for_each_stencil_weight(G, particle_stencil(G, body_shapes, P, p), [&](int node, double w) { inc += w * dT[node]; });
     P.temperature[p] += inc;
   }
 }
