@@ -167,7 +167,7 @@ int main(int argc, char** argv) {
   if (code < 0) code = run_case(c, run_options);
   // A signal that came after the last step: the results are complete, but the program stops here
   // (no pictures) with the documented code.
-  if (program_stop_token().stop_requested()) {
+  if (code == kExitComplete && program_stop_token().stop_requested()) {
     std::cerr << "interrupted after the run completed: results complete, pictures not drawn\n";
     return kExitInterrupted;
   }
