@@ -322,7 +322,7 @@ int run_validation(const ValidateOptions& o) {
   TextTable runs_table;
   runs_table.columns = {"condition", "kind", "speed_m_per_s", "speed_m_per_min", "h_mm", "edge_radius_um",
                         "measured_status", "origin", "status", "cutting_force_N_per_mm", "thrust_force_N_per_mm",
-                        "force_window", "chip_thickness_ratio", "chip_thickness_um", "cell_size_um", "mass_scaling_factor",
+                        "force_window", "Fc_drift_in_window_percent", "Ft_drift_in_window_percent", "chip_thickness_ratio", "chip_thickness_um", "cell_size_um", "mass_scaling_factor",
                         "max_temperature_K", "chip_classification", "wall_time_s", "result_dir", "message"};
   for (const Condition& c : conditions) {
     if (c.origin.empty()) continue;
@@ -330,6 +330,8 @@ int run_validation(const ValidateOptions& o) {
                                fmt::format("{:g}", c.h_mm), fmt::format("{:g}", c.edge_radius_um),
                                c.measured ? c.measured->status : "", c.origin, c.result.status,
                                format_number(c.fc()), format_number(c.ft()), c.result.force_basis,
+                               format_number(c.result.cutting_force_drift_percent, 2),
+                               format_number(c.result.thrust_force_drift_percent, 2),
                                format_number(c.result.chip_thickness_ratio), format_number(c.chip_thickness_um()),
                                format_number(c.result.cell_size_um), format_number(c.result.mass_scaling_factor),
                                format_number(c.result.max_temperature_K), c.result.chip_classification,
@@ -536,7 +538,9 @@ int run_validation(const ValidateOptions& o) {
          "Johnson 1985 JC flow and JC damage initiation, G_f = 15 kJ/m² falling to 5 kJ/m² above a plastic strain "
          "rate of ~2e6 1/s (docs/materials.md).\n"
          "- Simulated forces are means over the steady window of each run; where a run ended before it (short "
-         "cuts), the mean raw force over the last half of the cut (column force_window of validation_runs.csv).\n"
+         "cuts), the mean raw force over the last half of the cut (column force_window of validation_runs.csv). "
+         "Columns Fc_ and Ft_drift_in_window_percent there give the second half's mean minus the first half's, in % "
+         "of the mean: beyond ±10 % the cut had not reached a steady state.\n"
          "- The measured speeds (≤ 6.4 m/s) are below the ultra-high-speed range of the target paper; chip-type "
          "data at 5–75 m/s exist only as abstract statements without the transition speed.\n\n";
 

@@ -1,10 +1,13 @@
 #include "cutting/cutting_forces.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "solver/simulation.hpp"
@@ -14,7 +17,7 @@ namespace mpmcut {
 
 namespace {
 constexpr double kPerMm = 1e-3;  // N/m -> N/mm
-constexpr int kStateSize = 20;   // doubles in the checkpoint state
+constexpr int kStateSize = 24;  // doubles in the checkpoint state
 
 std::vector<std::string> force_columns() {
   return {"time_s",
@@ -55,6 +58,7 @@ CuttingForcesObserver::CuttingForcesObserver(const CuttingParameters& c, const s
     : c_(c),
       csv_(result_dir / "forces.csv", force_columns(), append ? CsvWriter::Mode::Append : CsvWriter::Mode::Create) {
   steady_start_time_ = steady_window_start_travel(c) / c.cutting_speed;
+  steady_mid_time_ = 0.5 * (steady_start_time_ + c.cut_length / c.cutting_speed);
 }
 
 void CuttingForcesObserver::RakeSums::add(const RakeSums& o) {
@@ -107,6 +111,12 @@ void CuttingForcesObserver::at_history(const Simulation& sim) {
   if (t > last_row_time_) filtered = (tool.impulse - last_row_impulse_) / (t - last_row_time_);
   last_row_time_ = t;
   last_row_impulse_ = tool.impulse;
+  // The impulse at the first row past the window's middle, to compare the means of its two halves
+  // (is the window steady?); on a row, so that forces.csv splits the same way.
+  if (steady_start_impulse_ && !steady_mid_impulse_ && t >= steady_mid_time_ && t > steady_start_time_) {
+    steady_mid_impulse_ = tool.impulse;
+    steady_mid_time_ = t;
+  }
   // Contact length and rake-face forces: time means since the previous row, like the filtered force.
   const RakeSums& r = row_sums_;
   const double length = r.time > 0.0 ? r.length_time / r.time : last_contact_length_;
@@ -119,20 +129,23 @@ void CuttingForcesObserver::at_history(const Simulation& sim) {
 
 std::string CuttingForcesObserver::checkpoint_state() const {
   const Vec2 start = steady_start_impulse_.value_or(Vec2::Zero());
+  const Vec2 mid = steady_mid_impulse_.value_or(Vec2::Zero());
   const RakeSums& a = row_sums_;
   const RakeSums& b = steady_sums_;
   const double v[kStateSize] = {last_row_time_, last_row_impulse_.x(), last_row_impulse_.y(), steady_start_time_,
                                 steady_start_impulse_ ? 1.0 : 0.0, start.x(), start.y(),
                                 a.time, a.length_time, a.normal, a.friction, a.sliding_normal, a.safeguard_normal,
                                 b.time, b.length_time, b.normal, b.friction, b.sliding_normal, b.safeguard_normal,
-                                last_contact_length_};
+                                last_contact_length_,
+                                steady_mid_time_, steady_mid_impulse_ ? 1.0 : 0.0, mid.x(), mid.y()};
   return std::string(reinterpret_cast<const char*>(v), sizeof v);
 }
 
 void CuttingForcesObserver::restore_checkpoint_state(std::string_view state) {
-  // A checkpoint written before the rake-face sums (7 values) resumes with those sums at zero.
+  // A checkpoint written before the rake-face sums (7 values) resumes with those sums at zero, one
+  // written before the window's midpoint (20 values) without the steadiness check.
   double v[kStateSize] = {};
-  if (state.size() != sizeof v && state.size() != 7 * sizeof(double))
+  if (state.size() != sizeof v && state.size() != 7 * sizeof(double) && state.size() != 20 * sizeof(double))
     throw std::runtime_error("forces observer: checkpoint state has " + std::to_string(state.size()) +
                              " bytes, expected " + std::to_string(sizeof v));
   std::memcpy(v, state.data(), state.size());
@@ -144,6 +157,13 @@ void CuttingForcesObserver::restore_checkpoint_state(std::string_view state) {
   steady_start_time_ = v[3];
   steady_start_impulse_.reset();
   if (v[4] != 0.0) steady_start_impulse_ = Vec2(v[5], v[6]);
+  steady_mid_impulse_.reset();
+  if (state.size() == sizeof v) {
+    steady_mid_time_ = v[20];
+    if (v[21] != 0.0) steady_mid_impulse_ = Vec2(v[22], v[23]);
+  } else if (steady_start_impulse_ && last_row_time_ >= steady_mid_time_) {
+    steady_mid_time_ = std::numeric_limits<double>::infinity();  // the midpoint has passed unrecorded
+  }
 }
 
 void CuttingForcesObserver::at_finish(const Simulation& sim, nlohmann::json& summary) {
@@ -192,6 +212,26 @@ void CuttingForcesObserver::at_finish(const Simulation& sim, nlohmann::json& sum
                                 {"end_tool_travel_m", -tool.displacement.x()},
                                 {"definition", "mean of the contact force over the tool travel after the chip has "
                                                "formed: from max(steady_start_fraction * cut_length, 3 t0) to the end"}};
+    if (steady_mid_impulse_ && sim.time() > steady_mid_time_) {
+      // Second half's mean minus the first half's, relative to the window's mean: a force that still
+      // drifts (a transient longer than the cut) shows here, not in the mean.
+      const Vec2 first = (*steady_mid_impulse_ - *steady_start_impulse_) / (steady_mid_time_ - steady_start_time_);
+      const Vec2 second = (tool.impulse - *steady_mid_impulse_) / (sim.time() - steady_mid_time_);
+      const auto percent = [](double a, double b, double m) { return m != 0.0 ? 100.0 * (b - a) / std::abs(m) : 0.0; };
+      const double fc = percent(first.x(), second.x(), mean.x()), ft = percent(first.y(), second.y(), mean.y());
+      nlohmann::json drift = {
+          {"cutting_force_percent", fc},
+          {"thrust_force_percent", ft},
+          {"split_time_s", steady_mid_time_},
+          {"definition", "mean force over the second half of the steady window minus that over its first half, in % "
+                         "of the window's mean"}};
+      if (std::max(std::abs(fc), std::abs(ft)) > kSteadyDriftWarningPercent)
+        drift["warning"] = fmt::format(
+            "the {} force changes by {:+.0f} % between the halves of the steady window: the cut has not reached a "
+            "steady state; a longer cut (cutting.cut_length) gives a mean that is less tied to its length",
+            std::abs(fc) >= std::abs(ft) ? "cutting" : "thrust", std::abs(fc) >= std::abs(ft) ? fc : ft);
+      summary["steady_window"]["drift"] = drift;
+    }
   } else {
     summary["mean_cutting_force_N_per_mm"] = nullptr;
     summary["mean_thrust_force_N_per_mm"] = nullptr;

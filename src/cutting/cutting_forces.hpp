@@ -11,6 +11,9 @@
 
 namespace mpmcut {
 
+// A steady window whose two halves' mean forces differ by more than this gets a warning.
+inline constexpr double kSteadyDriftWarningPercent = 10.0;
+
 // Sign conventions: the tool moves along -x. The cutting force F_c is the force along the
 // cutting velocity needed to push the tool (= x component of the material's force on the
 // tool); the thrust force F_t is normal to the machined surface, positive when the material
@@ -33,6 +36,8 @@ class CuttingForcesObserver final : public RunObserver {
   Vec2 last_row_impulse_ = Vec2::Zero();
   double steady_start_time_ = 0.0;
   std::optional<Vec2> steady_start_impulse_;
+  double steady_mid_time_ = 0.0;  // s: the window's midpoint, planned from the cut length, then when reached
+  std::optional<Vec2> steady_mid_impulse_;
   // Rake-face contact (from the contact records of every step): sums since the last row and over
   // the steady window. Impulses on the tool in N s/m, length x time in m s.
   struct RakeSums {

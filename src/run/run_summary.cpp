@@ -232,4 +232,10 @@ ChipHeadline chip_headline(const RunSummary& s) {
 
 std::optional<double> mass_scaling_factor(const RunSummary& s) { return section_number(s.sections, "mass_scaling", "factor"); }
 
+std::optional<double> steady_drift_percent(const RunSummary& s, const char* force) {
+  if (!s.sections.contains("steady_window") || !s.sections["steady_window"].is_object()) return std::nullopt;
+  const std::string key = std::string(force) + "_force_percent";
+  return section_number(s.sections["steady_window"], "drift", key.c_str());
+}
+
 }  // namespace mpmcut

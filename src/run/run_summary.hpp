@@ -81,5 +81,7 @@ struct ChipHeadline {
 };
 ChipHeadline chip_headline(const RunSummary& s);
 std::optional<double> mass_scaling_factor(const RunSummary& s);
+// steady_window.drift: the second half's mean force minus the first half's, % of the mean (Fc, Ft).
+std::optional<double> steady_drift_percent(const RunSummary& s, const char* force /* "cutting" | "thrust" */);
 
 }  // namespace mpmcut

@@ -219,6 +219,8 @@ CaseResult read_case_result(const fs::path& dir, const fs::path& log_file, int e
   r.thrust_force_N_per_mm = s.mean_thrust_force_N_per_mm;
   if (r.cutting_force_N_per_mm && r.thrust_force_N_per_mm) {
     r.force_basis = "steady window";
+    r.cutting_force_drift_percent = steady_drift_percent(s, "cutting");
+    r.thrust_force_drift_percent = steady_drift_percent(s, "thrust");
   } else if (double fc = 0, ft = 0; last_half_means(dir / "forces.csv", fc, ft)) {
     r.cutting_force_N_per_mm = fc;
     r.thrust_force_N_per_mm = ft;

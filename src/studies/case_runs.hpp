@@ -30,6 +30,8 @@ struct CaseResult {
   std::string message;              // why it failed (summary message or the end of the log)
   std::optional<double> cutting_force_N_per_mm, thrust_force_N_per_mm;
   std::string force_basis;          // "steady window" | "last half of the cut (no steady window)" | ""
+  // Second half of the steady window's mean minus the first half's, % of the mean (a drifting cut).
+  std::optional<double> cutting_force_drift_percent, thrust_force_drift_percent;
   std::optional<double> max_temperature_K;
   std::optional<double> shear_zone_max_K, tool_chip_max_K;  // summary.json "temperature" (mpmcut analyze)
   std::string chip_classification;  // from summary.json "chip" (mpmcut analyze); blank if absent

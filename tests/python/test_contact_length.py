@@ -10,7 +10,9 @@ A tiny coarse cut (25 um cells, 1 particle per cell, 0.1 mm of travel) at mu = 0
   face normal is the cutting direction);
 - at mu = 0 the rake-face friction force is zero (to round-off);
 - forces.csv has the contact length and rake-force columns, and their time mean over the steady window
-  agrees with summary.json (rows are time means between rows, the steady window starts on a row here).
+  agrees with summary.json (rows are time means between rows, the steady window starts on a row here);
+- steady_window.drift (second half's mean force minus the first half's, % of the mean) agrees with the same
+  difference computed from the rows of forces.csv (a sign or definition error would differ by its size).
 """
 import csv
 import json
@@ -91,11 +93,43 @@ def main(binary, scratch):
     if total <= 0 or abs(acc / total - length) > 0.05 * length:
         fail(f"forces.csv contact length mean {acc / max(total, 1e-30) * 1e6:.2f} um vs summary {length * 1e6:.2f} um")
 
+    check_drift(summary, rows)
+
     summary0, _ = run(binary, scratch, 0.0)
     # Zero up to round-off of the impulse's component along the face (1e-9 of the normal force).
     if abs(summary0["rake_face"]["friction_force_N_per_mm"]) > 1e-9 * summary0["rake_face"]["normal_force_N_per_mm"]:
         fail(f"mu = 0 but rake friction {summary0['rake_face']['friction_force_N_per_mm']} N/mm")
     print("OK")
+
+
+def check_drift(summary, rows):
+    """steady_window.drift from forces.csv: the second half's mean from its rows (the split and the end lie on
+    rows, and rows are exact impulse means), the first half's from the window's mean and the second half's."""
+    w = summary["steady_window"]
+    drift = w.get("drift")
+    if drift is None:
+        fail("summary.json steady_window has no drift")
+    start, split, end = w["start_time_s"], drift["split_time_s"], w["end_time_s"]
+    if not start < split < end:
+        fail(f"drift split {split} s not inside the window [{start}, {end}] s")
+    if not any(abs(float(r["time_s"]) - split) <= 1e-12 * end for r in rows):
+        fail(f"drift split {split} s is not the time of a row of forces.csv")
+    for column, key, mean_key in (("cutting_force_N_per_mm", "cutting_force_percent", "mean_cutting_force_N_per_mm"),
+                                  ("thrust_force_N_per_mm", "thrust_force_percent", "mean_thrust_force_N_per_mm")):
+        impulse, time, prev_t = 0.0, 0.0, None
+        for r in rows:
+            t = float(r["time_s"])
+            if prev_t is not None and prev_t >= split - 1e-12 * end:
+                impulse += float(r[column]) * (t - prev_t)
+                time += t - prev_t
+            prev_t = t
+        mean = summary[mean_key]
+        second = impulse / time
+        first = (mean * (end - start) - second * (end - split)) / (split - start)
+        expected = 100.0 * (second - first) / abs(mean)
+        print(f"{key}: summary {drift[key]:+.3f} %, from forces.csv {expected:+.3f} %")
+        if abs(drift[key] - expected) > 0.01:  # a sign or definition error is the size of the drift
+            fail(f"steady_window.drift {key} {drift[key]:.3f} % vs {expected:.3f} % from forces.csv")
 
 
 if __name__ == "__main__":
