@@ -107,7 +107,15 @@ int main(int argc, char** argv) {
   add_analyze_command(app);
   add_keys_command(app);
 
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::RuntimeError& e) {  // a subcommand's own exit code (its callback ran)
+    return e.get_exit_code();
+  } catch (const CLI::ParseError& e) {
+    // A bad option or value is an input error like a bad case file: exit code 2 (docs/reliability.md),
+    // not CLI11's own codes; --help and --version exit 0.
+    return app.exit(e) == 0 ? 0 : kExitInputError;
+  }
 
   if (*bench) return run_benchmark(bench_options);
   if (*resume) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <thread>
@@ -17,6 +18,7 @@
 #include "app/sweep_command.hpp"
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
+#include "io/material_library.hpp"
 #include "run/case_loading.hpp"
 #include "studies/measured_conditions.hpp"
 #include "studies/task_farm.hpp"
@@ -90,6 +92,8 @@ struct ValidateOptions {
   bool list = false;
   std::vector<double> h_mm, speeds_m_per_min;
   std::vector<std::string> condition_ids;
+  std::string material;         // a library set; empty: the default (ti64-cutting)
+  std::optional<double> friction;  // Coulomb coefficient; none: the default (0.35)
 };
 
 ConditionRunSettings run_settings(const ValidateOptions& o) {
@@ -97,6 +101,14 @@ ConditionRunSettings run_settings(const ValidateOptions& o) {
   s.quick = o.quick;
   s.cells_per_feed = o.cells_per_feed;
   s.cells_per_edge_radius = o.cells_per_edge_radius;
+  if (!o.material.empty()) {
+    s.material = o.material;
+    s.material_note = "chosen with --material; docs/materials.md";
+  }
+  if (o.friction) {
+    s.friction = *o.friction;
+    s.friction_note = "chosen with --friction";
+  }
   return s;
 }
 
@@ -262,7 +274,8 @@ std::string condition_label(const Condition& c) {
 int run_validation(const ValidateOptions& o) {
   const fs::path out = o.out_dir.empty() ? fs::path(o.quick ? "results/validation_quick" : "results/validation")
                                          : fs::path(o.out_dir);
-  std::vector<Condition> conditions = matrix_conditions(run_settings(o));
+  const ConditionRunSettings settings = run_settings(o);
+  std::vector<Condition> conditions = matrix_conditions(settings);
   select_conditions(conditions, o);
   if (o.list) return list_conditions(conditions, out, o);
   fs::create_directories(out / "cases");
@@ -532,11 +545,16 @@ int run_validation(const ValidateOptions& o) {
          "- **Width of cut b = 1 mm (assumed).** The Klippel et al. data give forces in N for the whole width; b is "
          "in the paper's section 2, which was not read. Absolute Fc, Ft in N/mm are compared under this assumption; "
          "Ft/Fc and the ratios between conditions do not depend on it and are the primary comparison.\n"
-         "- Rake 0°, clearance 11°, Coulomb friction 0.35 (preset defaults): the tool angles are not in the data "
-         "file. The edge radius of each force run is the measured mean r_n of its tests.\n"
-         "- Material: the `ti64-cutting` set of the material library, the calibration the default case uses: "
-         "Johnson 1985 JC flow and JC damage initiation, G_f = 15 kJ/m² falling to 5 kJ/m² above a plastic strain "
-         "rate of ~2e6 1/s (docs/materials.md).\n"
+         "- Rake 0°, clearance 11° (preset defaults): the tool angles are not in the data file. The edge radius of "
+         "each force run is the measured mean r_n of its tests. Coulomb friction "
+      << fmt::format("{:g} ({})", settings.friction, settings.friction_note) << ".\n"
+      << "- Material: the `" << settings.material << "` set of the material library ("
+      << settings.material_note << ")"
+      << (settings.material == "ti64-cutting"
+              ? ": Johnson 1985 JC flow and JC damage initiation, G_f = 15 kJ/m² falling to 5 kJ/m² above a plastic "
+                "strain rate of ~2e6 1/s (docs/materials.md)"
+              : "")
+      << ".\n"
          "- Simulated forces are means over the steady window of each run; where a run ended before it (short "
          "cuts), the mean raw force over the last half of the cut (column force_window of validation_runs.csv). "
          "Columns Fc_ and Ft_drift_in_window_percent there give the second half's mean minus the first half's, in % "
@@ -635,6 +653,16 @@ void add_validate_command(CLI::App& app) {
   v->add_option("-j,--jobs", o->jobs, "Runs at the same time (default: cores / threads)")->check(CLI::Range(1, 1024));
   v->add_option("-t,--threads", o->threads, "OpenMP threads of each run (default: 1)")->check(CLI::Range(1, 1024));
   v->add_flag("--no-plots", o->no_plots, "Only the tables");
+  v->add_option("--material", o->material,
+                "Material set of the library to run (default ti64-cutting; e.g. a calibrated set, docs/materials.md)")
+      ->check([](const std::string& name) -> std::string {
+        if (builtin_material_library().find(name)) return {};
+        std::string known;
+        for (const std::string& n : builtin_material_library().names()) known += (known.empty() ? "" : ", ") + n;
+        return "unknown material set \"" + name + "\"; the library has: " + known;
+      });
+  v->add_option("--friction", o->friction, "Coulomb coefficient at the tool (default 0.35; e.g. a calibrated one)")
+      ->check(CLI::Range(0.0, 2.0));
   v->callback([o]() {
     int code = 0;
     try {

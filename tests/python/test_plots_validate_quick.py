@@ -4,7 +4,8 @@ usage: /usr/bin/python3 test_plots_validate_quick.py MPMCUT_BINARY SCRATCH_DIR
 Checks:
 - `--list` names all 35 force rows and the 2 chip-type rows; the case file of the thin feed with a large edge
   (h = 0.01 mm, r_n = 39.8 um) has cell = t0/10 = 1 um, that of h = 0.2 mm (r_n = 38.8 um) r_n/4 = 9.7 um;
-  --h / --speeds-m-per-min select (intersected); a value outside the matrix is an error naming the option.
+  --h / --speeds-m-per-min select (intersected); a value outside the matrix is an error naming the option;
+  --material and --friction reach the case files, an unknown set or a friction out of range exits 2.
 - Resumption: `--quick --conditions A,B`, then `--quick` (its 5 conditions, a superset): the logs of A and B say
   "kept:", the others do not; the report says 5 of 37 complete; a third part of one condition still reports all 5
   (4 of them as "earlier run").
@@ -156,6 +157,20 @@ def main(binary, scratch):
     bad = validate(binary, "--list", "--h", "0.07", "--out", lst, expect=None)
     if bad.returncode == 0 or "--h 0.07" not in bad.stderr:
         fail("--h 0.07 (not in the matrix) must be an error naming the option")
+
+    # Another material set and friction (e.g. a calibrated pair) reach every case file; bad ones are input errors.
+    other = os.path.join(scratch, "other")
+    validate(binary, "--list", "--material", "ti64-lee-lin-1998", "--friction", "0.5", "--h", "0.1",
+             "--speeds-m-per-min", "100", "--out", other)
+    with open(os.path.join(other, "cases", "forces_h0.1mm_vc100mpmin.toml")) as f:
+        text = f.read()
+    if 'material = "ti64-lee-lin-1998"' not in text or abs(case_value(
+            os.path.join(other, "cases", "forces_h0.1mm_vc100mpmin.toml"), "friction") - 0.5) > 1e-12:
+        fail("--material / --friction did not reach the case file")
+    bad = validate(binary, "--list", "--material", "ti64-nonesuch", "--out", other, expect=2)
+    if "ti64-cutting" not in bad.stderr:
+        fail("an unknown --material must list the library's sets")
+    validate(binary, "--list", "--friction", "3", "--out", other, expect=2)
 
     # Resumption: part one, then the quick set (a superset) keeps part one.
     out = os.path.join(scratch, "validation")
