@@ -361,12 +361,16 @@ void Calibrator::write_results(const Evaluation& best, const std::vector<Conditi
       "weighted RMS relative error, weights Fc {:g}, Ft {:g}, chip thickness {:g}; measured forces in N divided by "
       "an ASSUMED width of cut b = {:g} mm",
       c_.weight_fc, c_.weight_ft, c_.weight_chip_thickness, c_.width_of_cut_mm);
+  const bool global_stage = c_.global_algorithm != "none" && c_.global_evaluations > 0;
   const std::string budget_text =
-      fmt::format("{} evaluations ({} global {}, then {}), seed {}", c_.evaluations, c_.global_evaluations,
-                  c_.global_algorithm, c_.local_algorithm, c_.seed);
-  const std::string resolution = c_.runs.quick ? "quick (cell = t0/4, 1 particle per cell, 4 cells of travel)"
-                                               : fmt::format("cell = min(t0/{}, r_n/{:g})", c_.runs.cells_per_feed,
-                                                             c_.runs.cells_per_edge_radius);
+      global_stage ? fmt::format("{} evaluations ({} global {}, then {}), seed {}", c_.evaluations,
+                                 c_.global_evaluations, c_.global_algorithm, c_.local_algorithm, c_.seed)
+                   : fmt::format("{} evaluations ({} only), seed {}", c_.evaluations, c_.local_algorithm, c_.seed);
+  const std::string resolution =
+      c_.runs.quick ? "quick (cell = t0/4, 1 particle per cell, 4 cells of travel)"
+      : c_.runs.cells_per_edge_radius > 0.0
+          ? fmt::format("cell = min(t0/{}, r_n/{:g})", c_.runs.cells_per_feed, c_.runs.cells_per_edge_radius)
+          : fmt::format("cell = t0/{} (no edge-radius limit)", c_.runs.cells_per_feed);
 
   // The best set, ready to paste into a case file or materials/.
   const auto friction_index = [&]() -> std::optional<std::size_t> {

@@ -73,6 +73,21 @@ TEST(MaterialLibrary, CuttingSetIsJohnson1985WithTheRateDependentFractureEnergy)
   EXPECT_TRUE(*cut == expected);
 }
 
+// The set identified by `mpmcut calibrate` (docs/results/calibration): ti64-cutting with the fitted A and m,
+// nothing else changed; the same values as the calibration's best_material.toml.
+TEST(MaterialLibrary, KlippelCalibratedSetIsTheCuttingSetWithTheFittedAAndM) {
+  const MaterialLibrary& lib = builtin_material_library();
+  const MaterialParameters* fitted = lib.find("ti64-klippel-2speed");
+  ASSERT_NE(fitted, nullptr);
+  MaterialParameters expected = *lib.find("ti64-cutting");
+  expected.name = fitted->name;
+  expected.citation = fitted->citation;
+  expected.jc_A = 889.482e6;
+  expected.jc_m = 1.14036;
+  EXPECT_TRUE(*fitted == expected);
+  EXPECT_NE(fitted->citation.find("Klippel"), std::string::npos);
+}
+
 TEST(MaterialLibrary, HasGenericElasticSets) {
   const MaterialLibrary& lib = builtin_material_library();
   for (const char* name : {"elastic-unit", "elastic-steel", "elastic-aluminium", "elastic-tungsten-carbide"}) {
