@@ -657,9 +657,7 @@ void add_validate_command(CLI::App& app) {
                 "Material set of the library to run (default ti64-cutting; e.g. a calibrated set, docs/materials.md)")
       ->check([](const std::string& name) -> std::string {
         if (builtin_material_library().find(name)) return {};
-        std::string known;
-        for (const std::string& n : builtin_material_library().names()) known += (known.empty() ? "" : ", ") + n;
-        return "unknown material set \"" + name + "\"; the library has: " + known;
+        return "unknown material set \"" + name + "\"; the library has: " + join(builtin_material_library().names(), ", ");
       });
   v->add_option("--friction", o->friction, "Coulomb coefficient at the tool (default 0.35; e.g. a calibrated one)")
       ->check(CLI::Range(0.0, 2.0));
