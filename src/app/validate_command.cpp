@@ -21,6 +21,7 @@
 #include "io/material_library.hpp"
 #include "run/case_loading.hpp"
 #include "studies/measured_conditions.hpp"
+#include "studies/run_records.hpp"
 #include "studies/task_farm.hpp"
 #include "studies/validation_metrics.hpp"
 
@@ -62,7 +63,9 @@ struct Condition : CuttingCondition {
   std::map<std::string, std::string> chip;  // the ti64_chip_morphology.csv row for chip conditions
   std::string case_text;
   bool selected = false;                    // run by this invocation
-  std::string origin;                       // "this run" | "earlier run" (complete, same scene) | "" (not reported)
+  // "this run" | "earlier run" (complete in --out, same scene) | "record" (complete in --records, same scene) |
+  // "" (not reported)
+  std::string origin;
   CaseResult result;
 
   bool complete() const { return !origin.empty() && result.status == "complete"; }
@@ -86,6 +89,7 @@ struct ValidateOptions {
   int cells_per_feed = 10;            // N: cell <= t0 / N (the cutting preset's t0/10)
   double cells_per_edge_radius = 4.0; // M: cell <= r_n / M
   std::string out_dir;
+  std::string records_dir;  // --records: complete runs kept as small committed files (studies/run_records.hpp)
   int jobs = 0;
   int threads = 1;
   bool no_plots = false;
@@ -240,8 +244,12 @@ int list_conditions(const std::vector<Condition>& conditions, const fs::path& ou
     write_file_atomically(case_file, [&](std::ostream& s) { s << c.case_text; });
     const Case condition = condition_case(c, case_file);
     const RunCost cost = estimate_run_cost(condition.scene);
-    const ExistingRun existing = existing_run(out / c.id, condition);
-    const char* state = existing == ExistingRun::Complete ? "complete" : existing == ExistingRun::Resumable ? "resumable" : "-";
+    ExistingRun existing = existing_run(out / c.id, condition);
+    const bool recorded = existing != ExistingRun::Complete && !o.records_dir.empty() &&
+                          existing_run(fs::path(o.records_dir) / c.id, condition) == ExistingRun::Complete;
+    if (recorded) existing = ExistingRun::Complete;
+    const char* state = recorded ? "record" : existing == ExistingRun::Complete ? "complete"
+                        : existing == ExistingRun::Resumable ? "resumable" : "-";
     const double ps = cost.particle_steps();
     total_particle_steps += ps;
     if (existing != ExistingRun::Complete) total_to_run += ps;
@@ -256,10 +264,10 @@ int list_conditions(const std::vector<Condition>& conditions, const fs::path& ou
                              ps * 1e-9, ps * kCoreSecondsPerParticleStep / 3600.0, state);
   }
   std::cout << fmt::format(
-      "{} conditions, {} already complete in {}; {:.3g} G particle-steps, about {:.3g} core-hours in all, {:.3g} "
+      "{} conditions, {} already complete in {}{}; {:.3g} G particle-steps, about {:.3g} core-hours in all, {:.3g} "
       "core-hours still to run (estimate: {:.2g} core-s per particle-step, steps at the first step's stable time step; "
       "case files in {})\n",
-      n, complete, out.string(), total_particle_steps * 1e-9, total_particle_steps * kCoreSecondsPerParticleStep / 3600.0,
+      n, complete, out.string(), o.records_dir.empty() ? "" : " or --records " + o.records_dir, total_particle_steps * 1e-9, total_particle_steps * kCoreSecondsPerParticleStep / 3600.0,
       total_to_run * kCoreSecondsPerParticleStep / 3600.0, kCoreSecondsPerParticleStep, (out / "cases").string());
   return 0;
 }
@@ -280,6 +288,16 @@ int run_validation(const ValidateOptions& o) {
   if (o.list) return list_conditions(conditions, out, o);
   fs::create_directories(out / "cases");
   fs::create_directories(out / "logs");
+
+  // Complete runs of the same scene kept in --records come back into `out` and are not run again.
+  if (!o.records_dir.empty()) {
+    for (Condition& c : conditions) {
+      const fs::path case_file = out / "cases" / (c.id + ".toml");
+      if (!restore_run_record(fs::path(o.records_dir) / c.id, out / c.id, condition_case(c, case_file))) continue;
+      c.selected = false;
+      c.origin = "record";
+    }
+  }
 
   // The runs of this invocation; each child keeps a complete run of the same scene (--keep-complete), so a
   // rerun over a superset runs only what is new.
@@ -313,17 +331,28 @@ int run_validation(const ValidateOptions& o) {
     run_of[i]->origin = "this run";
   }
   // Conditions not selected now but complete in `out` from an earlier part with the same scene (the same
-  // resolution rule and settings) are reported too, so that a matrix run in parts ends in one report.
+  // resolution rule and settings), or restored from a record, are reported too, so that a matrix run in parts
+  // ends in one report.
   for (Condition& c : conditions) {
     if (c.selected) continue;
-    try {
-      if (existing_run(out / c.id, condition_case(c, out / "cases" / (c.id + ".toml"))) != ExistingRun::Complete) continue;
-    } catch (const std::exception&) {
-      continue;
+    if (c.origin != "record") {
+      try {
+        if (existing_run(out / c.id, condition_case(c, out / "cases" / (c.id + ".toml"))) != ExistingRun::Complete)
+          continue;
+      } catch (const std::exception&) {
+        continue;
+      }
+      c.origin = "earlier run";
     }
     c.result = read_case_result(out / c.id, out / "logs" / (c.id + ".log"), 0);
-    c.origin = "earlier run";
   }
+  // Every complete run goes into --records, so that the next part (or session) keeps it.
+  if (!o.records_dir.empty())
+    for (const Condition& c : conditions)
+      if (c.complete() && c.origin != "record" && !save_run_record(out / c.id, fs::path(o.records_dir) / c.id))
+        std::cerr << fmt::format("warning: {}: the record in {} is of another scene (resolution, material or "
+                                 "settings); kept, not replaced by this run. Use another --records directory\n",
+                                 c.id, o.records_dir);
   int reported = 0, complete = 0, failed = 0;
   for (const Condition& c : conditions) {
     reported += !c.origin.empty();
@@ -518,7 +547,7 @@ int run_validation(const ValidateOptions& o) {
            "validation.**\n\n";
     s << fmt::format("**{} of the {} conditions of the matrix are complete** ({} force conditions of {} and {} "
                      "chip-type conditions); {} reported ({} run by this invocation{}, {} complete from an earlier run "
-                     "in this directory), {} not run yet{}. Errors and goals are over the {} complete force "
+                     "in this directory, {} from the run records{}), {} not run yet{}. Errors and goals are over the {} complete force "
                      "conditions.\n\n",
                      complete, conditions.size(),
                      std::count_if(conditions.begin(), conditions.end(), [](const Condition& c) { return c.kind == "forces" && c.complete(); }),
@@ -526,7 +555,8 @@ int run_validation(const ValidateOptions& o) {
                      std::count_if(conditions.begin(), conditions.end(), [](const Condition& c) { return c.kind == "chip"; }),
                      reported, runs.size(), completed ? "" : ", interrupted",
                      std::count_if(conditions.begin(), conditions.end(), [](const Condition& c) { return c.origin == "earlier run"; }),
-                     not_run.size(), not_run.empty() ? "" : " (listed at the end)", compared.size());
+                     std::count_if(conditions.begin(), conditions.end(), [](const Condition& c) { return c.origin == "record"; }),
+                     o.records_dir.empty() ? "" : " in " + o.records_dir, not_run.size(), not_run.empty() ? "" : " (listed at the end)", compared.size());
     s << "Resolution: " << resolution_text(o) << ".\n\n";
     s << "## Goals\n\n" << goals.markdown() << "\n";
     s << "Under the stated assumption b = 1 mm; no parameter was tuned per condition (one material set, one friction "
@@ -650,6 +680,11 @@ void add_validate_command(CLI::App& app) {
               "Print the selected conditions with cell size, cut length and estimated cost (particles x steps, "
               "core-hours) and whether --out holds them complete; writes their case files, runs nothing");
   v->add_option("-o,--out", o->out_dir, "Output directory (default: results/validation or results/validation_quick)");
+  v->add_option("--records", o->records_dir,
+                "Directory of run records (scene.toml, forces.csv, summary.json of each complete condition; small, "
+                "meant to be committed): conditions complete there with the same scene are reported without running, "
+                "and every complete condition is added to it, so that a matrix run over several sessions or machines "
+                "keeps its parts when the result directories are gone");
   v->add_option("-j,--jobs", o->jobs, "Runs at the same time (default: cores / threads)")->check(CLI::Range(1, 1024));
   v->add_option("-t,--threads", o->threads, "OpenMP threads of each run (default: 1)")->check(CLI::Range(1, 1024));
   v->add_flag("--no-plots", o->no_plots, "Only the tables");

@@ -9,6 +9,9 @@ Checks:
 - Resumption: `--quick --conditions A,B`, then `--quick` (its 5 conditions, a superset): the logs of A and B say
   "kept:", the others do not; the report says 5 of 37 complete; a third part of one condition still reports all 5
   (4 of them as "earlier run").
+- Run records (--records): a part writes scene.toml, forces.csv and summary.json of each complete condition to
+  the records; a new --out with the same records reports them as "record" without running them (no log) and with
+  the same forces; a record of another scene (another friction) is not used.
 - The report's arithmetic: validation_errors.csv, validation_goals.csv and validation_trends.csv recomputed here
   from validation_runs.csv and the data file (errors, worst, slope of Fc over ln v, signs, goals met).
 - validation.csv has Fc/Ft/Ft/Fc/t_c rows with the measured means; chip-type rows; validation.md states b = 1 mm,
@@ -131,6 +134,39 @@ def check_arithmetic(out):
         fail(f"trend goal value {goals[2]['value']}")
 
 
+def check_records(binary, scratch, out):
+    """--records keeps complete runs in small files and brings them back into a fresh --out."""
+    records = os.path.join(scratch, "records")
+    one = "forces_h0.04mm_vc400.1mpmin"
+    validate(binary, "--quick", "--no-plots", "--conditions", one, "--out", out, "--records", records)
+    for name in ("scene.toml", "forces.csv", "summary.json"):
+        if not os.path.isfile(os.path.join(records, one, name)):
+            fail(f"--records: no {name} in the record of {one}")
+    if len(os.listdir(records)) != 5:
+        fail(f"--records: every complete condition of the report should be recorded, have {os.listdir(records)}")
+    fresh = os.path.join(scratch, "validation_from_records")
+    validate(binary, "--quick", "--no-plots", "--conditions", one, "--out", fresh, "--records", records)
+    rows = {r["condition"]: r for r in read_csv(os.path.join(fresh, "validation_runs.csv"))}
+    if set(rows) != set(os.listdir(records)) or {r["origin"] for r in rows.values()} != {"record"}:
+        fail(f"--records into a fresh --out: origins {[(k, r['origin']) for k, r in rows.items()]}")
+    if os.path.exists(os.path.join(fresh, "logs", one + ".log")):
+        fail("a condition restored from its record was run again")
+    before = {r["condition"]: r for r in read_csv(os.path.join(out, "validation_runs.csv"))}
+    if rows[one]["cutting_force_N_per_mm"] != before[one]["cutting_force_N_per_mm"]:
+        fail("the record does not give the run's cutting force")
+    other = os.path.join(scratch, "validation_other_friction")
+    p = validate(binary, "--quick", "--no-plots", "--conditions", one, "--friction", "0.2", "--out", other,
+                 "--records", records)
+    rows = {r["condition"]: r for r in read_csv(os.path.join(other, "validation_runs.csv"))}
+    if rows.get(one, {}).get("origin") != "this run" or len(rows) != 1:
+        fail(f"a record of another scene (friction 0.35) was used for friction 0.2: {rows}")
+    if "kept, not replaced" not in p.stderr:
+        fail("a run of another scene must warn that it does not replace the record")
+    with open(os.path.join(records, one, "scene.toml")) as f:
+        if "0.2" in [line.split("=")[1].strip() for line in f if line.startswith("friction")]:
+            fail("the record of friction 0.35 was replaced by a run of friction 0.2")
+
+
 def main(binary, scratch):
     shutil.rmtree(scratch, ignore_errors=True)
     os.makedirs(scratch)
@@ -199,6 +235,8 @@ def main(binary, scratch):
     with open(os.path.join(out, "validation.md")) as f:
         if "5 of the 37 conditions of the matrix are complete" not in f.read():
             fail("a one-condition part does not report the 5 complete conditions")
+
+    check_records(binary, scratch, out)
 
     rows = read_csv(os.path.join(out, "validation.csv"))
     by = {(r["condition"].split(",")[0] + "," + r["condition"].split(",")[1], r["quantity"]): r for r in rows
