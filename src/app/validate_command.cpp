@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -279,6 +280,21 @@ std::string condition_label(const Condition& c) {
 }
 
 
+// Which program made the reported runs: runs kept from earlier parts or records may come from another revision.
+std::string revisions_text(const std::vector<Condition>& conditions) {
+  std::map<std::string, int> count;
+  for (const Condition& c : conditions)
+    if (c.complete()) ++count[c.result.source_revision];
+  std::vector<std::string> parts;
+  for (const auto& [revision, n] : count) parts.push_back(fmt::format("`{}` ({} runs)", revision, n));
+  std::string text = "Source revision of the program that made the complete runs (summary.json `source_revision`): " +
+                     (parts.empty() ? std::string("none") : join(parts, ", ")) + ".";
+  if (count.size() > 1)
+    text += " The runs come from more than one revision: where the physics changed between them, the conditions are "
+            "not comparable (rerun them into a fresh --out and --records).";
+  return text;
+}
+
 int run_validation(const ValidateOptions& o) {
   const fs::path out = o.out_dir.empty() ? fs::path(o.quick ? "results/validation_quick" : "results/validation")
                                          : fs::path(o.out_dir);
@@ -365,7 +381,7 @@ int run_validation(const ValidateOptions& o) {
   runs_table.columns = {"condition", "kind", "speed_m_per_s", "speed_m_per_min", "h_mm", "edge_radius_um",
                         "measured_status", "origin", "status", "cutting_force_N_per_mm", "thrust_force_N_per_mm",
                         "force_window", "Fc_drift_in_window_percent", "Ft_drift_in_window_percent", "chip_thickness_ratio", "chip_thickness_um", "cell_size_um", "mass_scaling_factor",
-                        "max_temperature_K", "chip_classification", "wall_time_s", "result_dir", "message"};
+                        "max_temperature_K", "chip_classification", "wall_time_s", "source_revision", "result_dir", "message"};
   for (const Condition& c : conditions) {
     if (c.origin.empty()) continue;
     runs_table.rows.push_back({c.id, c.kind, fmt::format("{:g}", c.speed_m_per_s), fmt::format("{:g}", c.speed_m_per_min()),
@@ -377,7 +393,8 @@ int run_validation(const ValidateOptions& o) {
                                format_number(c.result.chip_thickness_ratio), format_number(c.chip_thickness_um()),
                                format_number(c.result.cell_size_um), format_number(c.result.mass_scaling_factor),
                                format_number(c.result.max_temperature_K), c.result.chip_classification,
-                               format_number(c.result.wall_time_s), (out / c.id).string(), c.result.message});
+                               format_number(c.result.wall_time_s), c.result.source_revision, (out / c.id).string(),
+                               c.result.message});
   }
   runs_table.write_csv(out / "validation_runs.csv");
 
@@ -558,6 +575,7 @@ int run_validation(const ValidateOptions& o) {
                      std::count_if(conditions.begin(), conditions.end(), [](const Condition& c) { return c.origin == "record"; }),
                      o.records_dir.empty() ? "" : " in " + o.records_dir, not_run.size(), not_run.empty() ? "" : " (listed at the end)", compared.size());
     s << "Resolution: " << resolution_text(o) << ".\n\n";
+    s << revisions_text(conditions) << "\n\n";
     s << "## Goals\n\n" << goals.markdown() << "\n";
     s << "Under the stated assumption b = 1 mm; no parameter was tuned per condition (one material set, one friction "
          "coefficient for the whole matrix).\n\n";

@@ -1,4 +1,5 @@
 #include "run/run_summary.hpp"
+#include "run/source_revision.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -19,7 +20,7 @@ using json = nlohmann::json;
 
 // The typed keys, each written and read once below; everything else goes to `sections`.
 constexpr const char* kTypedKeys[] = {
-    "status", "message", "mpmcut_version", "title", "case_file", "particles", "grid_nodes", "cell_size_m", "steps",
+    "status", "message", "mpmcut_version", "source_revision", "title", "case_file", "particles", "grid_nodes", "cell_size_m", "steps",
     "simulated_time_s", "end_time_s", "wall_time_s", "threads", "particle_steps_per_s", "energy_J_per_m",
     "energy_balance", "max_temperature_K", "rigid_bodies", "removed_particles", "removed_mass_kg_per_m",
     "last_checkpoint", "resumed_from", "mean_cutting_force_N_per_mm", "mean_thrust_force_N_per_mm"};
@@ -84,6 +85,7 @@ RunSummary summarize(const Simulation& sim, const std::optional<CuttingParameter
   s.status = status;
   s.message = message;
   s.mpmcut_version = MPMCUT_VERSION;
+  s.source_revision = source_revision();
   s.title = sim.scene().title;
   s.case_file = sim.scene().source_file;
   s.particles = sim.particles().size();
@@ -121,6 +123,7 @@ json to_json(const RunSummary& s) {
   j["status"] = s.status;
   if (!s.message.empty()) j["message"] = s.message;
   j["mpmcut_version"] = s.mpmcut_version;
+  j["source_revision"] = s.source_revision;
   j["title"] = s.title;
   j["case_file"] = s.case_file;
   j["particles"] = s.particles;
@@ -166,6 +169,7 @@ RunSummary summary_from_json(const json& j) {
   s.status = text(j, "status");
   s.message = text(j, "message");
   s.mpmcut_version = text(j, "mpmcut_version");
+  s.source_revision = text(j, "source_revision");
   s.title = text(j, "title");
   s.case_file = text(j, "case_file");
   // A summary written at the start of a run has all of these; one from an older version may lack some.

@@ -39,6 +39,7 @@ struct RunSummary {
   std::string status;  // run_status: running, complete, failed, interrupted
   std::string message;  // why it failed or how to continue; empty: none
   std::string mpmcut_version, title, case_file;
+  std::string source_revision;  // git revision of the program that wrote the summary (run/source_revision.hpp)
   std::uint64_t particles = 0, grid_nodes = 0;
   double cell_size_m = 0.0;
   long steps = 0;

@@ -213,6 +213,7 @@ CaseResult read_case_result(const fs::path& dir, const fs::path& log_file, int e
   r.status = s.status;
   if (r.status.empty()) r.status = exit_code == 0 ? "complete" : "failed";
   r.message = s.message;
+  r.source_revision = s.source_revision.empty() ? "unrecorded" : s.source_revision;
   if (r.status != "complete" && r.message.empty()) r.message = last_lines(log_file, 2);
 
   r.cutting_force_N_per_mm = s.mean_cutting_force_N_per_mm;

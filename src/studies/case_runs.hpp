@@ -28,6 +28,7 @@ bool run_children(std::vector<ChildRun>& runs, int jobs, bool print_progress);
 struct CaseResult {
   std::string status;               // summary.json status, or "failed" / "not run"
   std::string message;              // why it failed (summary message or the end of the log)
+  std::string source_revision;      // of the program that wrote summary.json; "unrecorded" before it was recorded
   std::optional<double> cutting_force_N_per_mm, thrust_force_N_per_mm;
   std::string force_basis;          // "steady window" | "last half of the cut (no steady window)" | ""
   // Second half of the steady window's mean minus the first half's, % of the mean (a drifting cut).

@@ -12,6 +12,8 @@ Checks:
 - Run records (--records): a part writes scene.toml, forces.csv and summary.json of each complete condition to
   the records; a new --out with the same records reports them as "record" without running them (no log) and with
   the same forces; a record of another scene (another friction) is not used.
+- Each run's summary.json names the git revision it was built from (HEAD of this checkout); the runs table and
+  validation.md show it.
 - The report's arithmetic: validation_errors.csv, validation_goals.csv and validation_trends.csv recomputed here
   from validation_runs.csv and the data file (errors, worst, slope of Fc over ln v, signs, goals met).
 - validation.csv has Fc/Ft/Ft/Fc/t_c rows with the measured means; chip-type rows; validation.md states b = 1 mm,
@@ -134,6 +136,23 @@ def check_arithmetic(out):
         fail(f"trend goal value {goals[2]['value']}")
 
 
+def check_source_revision(out):
+    """Each run records the git revision of the program that made it; the report names it."""
+    revisions = {r["source_revision"] for r in read_csv(os.path.join(out, "validation_runs.csv"))}
+    if len(revisions) != 1 or "" in revisions or "unrecorded" in revisions:
+        fail(f"source_revision of the runs: {revisions}")
+    revision = revisions.pop()
+    head = subprocess.run(["git", "-C", os.path.join(HERE, "..", ".."), "rev-parse", "HEAD"], capture_output=True,
+                          text=True)
+    if head.returncode == 0 and revision != "unknown":
+        commit = revision.removesuffix("-dirty").rsplit("-g", 1)[-1]
+        if not head.stdout.strip().startswith(commit):
+            fail(f"source_revision {revision} is not the checkout's HEAD {head.stdout.strip()}")
+    with open(os.path.join(out, "validation.md")) as f:
+        if f"`{revision}`" not in f.read():
+            fail("validation.md does not name the source revision of its runs")
+
+
 def check_records(binary, scratch, out):
     """--records keeps complete runs in small files and brings them back into a fresh --out."""
     records = os.path.join(scratch, "records")
@@ -237,6 +256,7 @@ def main(binary, scratch):
             fail("a one-condition part does not report the 5 complete conditions")
 
     check_records(binary, scratch, out)
+    check_source_revision(out)
 
     rows = read_csv(os.path.join(out, "validation.csv"))
     by = {(r["condition"].split(",")[0] + "," + r["condition"].split(",")[1], r["quantity"]): r for r in rows
