@@ -21,6 +21,7 @@
 #include "io/input_error.hpp"
 #include "io/material_library.hpp"
 #include "run/case_loading.hpp"
+#include "run/run_summary.hpp"
 #include "studies/measured_conditions.hpp"
 #include "studies/run_records.hpp"
 #include "studies/task_farm.hpp"
@@ -280,6 +281,19 @@ std::string condition_label(const Condition& c) {
 }
 
 
+// Keeps the run of condition `id` in --records if it is complete; warns where a record of another scene is there.
+void record_run(const ValidateOptions& o, const fs::path& out, const std::string& id) {
+  try {
+    if (read_summary(out / id / "summary.json").status != "complete") return;
+    if (!save_run_record(out / id, fs::path(o.records_dir) / id))
+      std::cerr << fmt::format("warning: {}: the record in {} is of another scene (resolution, material or "
+                               "settings); kept, not replaced by this run. Use another --records directory\n",
+                               id, o.records_dir);
+  } catch (const std::exception& e) {
+    std::cerr << fmt::format("warning: {}: no record kept: {}\n", id, e.what());
+  }
+}
+
 // Which program made the reported runs: runs kept from earlier parts or records may come from another revision.
 std::string revisions_text(const std::vector<Condition>& conditions) {
   std::map<std::string, int> count;
@@ -330,6 +344,11 @@ int run_validation(const ValidateOptions& o) {
     // A quick run's pictures take longer than the run and show an unconverged chip.
     if (o.quick) r.args.push_back("--no-plots");
     r.log_file = out / "logs" / (c.id + ".log");
+    // A complete run is recorded as soon as it ends, so that an interrupted study keeps it.
+    if (!o.records_dir.empty())
+      r.on_finished = [&o, &out, id = c.id](const ChildRun& finished) {
+        if (finished.exit_code == 0) record_run(o, out, id);
+      };
     runs.push_back(r);
     run_of.push_back(&c);
   }
@@ -362,13 +381,10 @@ int run_validation(const ValidateOptions& o) {
     }
     c.result = read_case_result(out / c.id, out / "logs" / (c.id + ".log"), 0);
   }
-  // Every complete run goes into --records, so that the next part (or session) keeps it.
+  // Every complete run goes into --records (those of earlier parts too), so that the next part (or session) keeps it.
   if (!o.records_dir.empty())
     for (const Condition& c : conditions)
-      if (c.complete() && c.origin != "record" && !save_run_record(out / c.id, fs::path(o.records_dir) / c.id))
-        std::cerr << fmt::format("warning: {}: the record in {} is of another scene (resolution, material or "
-                                 "settings); kept, not replaced by this run. Use another --records directory\n",
-                                 c.id, o.records_dir);
+      if (c.complete() && c.origin == "earlier run") record_run(o, out, c.id);
   int reported = 0, complete = 0, failed = 0;
   for (const Condition& c : conditions) {
     reported += !c.origin.empty();

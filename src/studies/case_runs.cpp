@@ -186,6 +186,7 @@ bool run_children(std::vector<ChildRun>& runs, int jobs, bool print_progress) {
                                  exit_text(run.exit_code), run.wall_time_s,
                                  run.exit_code == 0 ? "" : ", log: " + run.log_file.string())
                   << std::flush;
+      if (run.on_finished) run.on_finished(run);
       it = running.erase(it);
       reaped = true;
     }

@@ -4,6 +4,7 @@
 // exactly as it would on its own. Here: the local process pool and the reading of a run's results;
 // studies/task_farm.hpp hands the same runs to MPI ranks instead when started under mpirun/srun.
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -17,6 +18,9 @@ struct ChildRun {
   std::filesystem::path log_file;
   int exit_code = -1;               // -1: not run (interrupted before it started)
   double wall_time_s = 0.0;
+  // Called once the child has ended (exit_code set), in the study's process: e.g. to keep a record of a
+  // complete run at once rather than at the end of a study that may be interrupted.
+  std::function<void(const ChildRun&)> on_finished;
 };
 
 // Runs the children, at most `jobs` at a time, each as /proc/self/exe in its own process group.

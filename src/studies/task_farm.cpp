@@ -142,6 +142,7 @@ bool farm_out(std::vector<ChildRun>& runs, bool print_progress) {
                                exit_word(run.exit_code), run.wall_time_s, status.MPI_SOURCE,
                                run.exit_code == 0 ? "" : ", log: " + run.log_file.string())
                 << std::flush;
+    if (run.on_finished) run.on_finished(run);
   }
   sigaction(SIGINT, &old_int, nullptr);
   sigaction(SIGTERM, &old_term, nullptr);
