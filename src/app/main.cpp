@@ -12,6 +12,7 @@
 #include "app/plot_command.hpp"
 #include "app/sweep_command.hpp"
 #include "app/calibrate_command.hpp"
+#include "app/convergence_command.hpp"
 #include "app/keys_command.hpp"
 #include "app/validate_command.hpp"
 #include "run/run_case.hpp"
@@ -102,6 +103,7 @@ int main(int argc, char** argv) {
 
   add_plot_command(app);
   add_sweep_command(app);
+  add_convergence_command(app);
   add_validate_command(app);
   add_calibrate_command(app);
   add_analyze_command(app);

@@ -12,6 +12,7 @@
 
 #include "app/plot_command.hpp"
 #include "app/stop_signal.hpp"
+#include "studies/grid_convergence_report.hpp"
 #include "studies/task_farm.hpp"
 #include "run/case_loading.hpp"
 #include "run/run_summary.hpp"
@@ -198,6 +199,10 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
            "(relative to the second finest). The study's goals: |ΔFc|, |ΔFt| and |Δ(t0/tc)| < 5 %, |Δpitch| < 10 %, "
            "the same chip type.\n\n"
         << conv.markdown() << "\n";
+      // The same Richardson table as `mpmcut convergence DIR`, from the sweep.csv just written.
+      const GridConvergenceReport richardson = grid_convergence_report(out / "sweep.csv");
+      if (richardson.conditions > 0) richardson.table.write_csv(out / "grid_convergence.csv");
+      s << richardson.markdown;
       s << "Plots: convergence.png (each quantity against the cells across h). ";
     } else {
       s << "Plots: forces_vs_speed.png, chip_vs_speed.png, chip_map.png. ";

@@ -87,6 +87,14 @@ def main(binary, scratch):
             fail(f"n{n}: kept = {kept}, expected {expect_kept}")
         if rows[f"v20mps_h0.1mm_n{n}"]["status"] != "complete":
             fail(f"n{n} not complete after the second sweep")
+    # Three resolutions: the Richardson table (mpmcut convergence) is in sweep.md and grid_convergence.csv.
+    with open(os.path.join(out, "grid_convergence.csv"), newline="") as f:
+        rich = {r["quantity"]: r for r in csv.DictReader(f)}
+    if rich.get("Fc", {}).get("cells_per_feed") != "3, 4, 5" or not rich["Fc"]["behaviour"]:
+        fail(f"grid_convergence.csv: {rich}")
+    with open(os.path.join(out, "sweep.md")) as f:
+        if "## Richardson extrapolation" not in f.read():
+            fail("sweep.md has no Richardson section with three resolutions")
     print("convergence sweep: OK")
 
 
