@@ -12,6 +12,7 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include "analysis/grid_convergence.hpp"
 #include "io/input_error.hpp"
 #include "python/csv_columns.hpp"
 #include "python/particle_views.hpp"
@@ -215,6 +216,26 @@ PYBIND11_MODULE(_mpmcut, m) {
       .def_property_readonly("particle_count", [](const PyRun& r) { return r.run().simulation().particles().size(); });
 
   m.attr("particle_fields") = ParticleViews::names();
+
+  m.def(
+      "grid_convergence",
+      [](double h1, double phi1, double h2, double phi2, double h3, double phi3) {
+        const GridConvergenceEstimate e = three_grid_convergence(h1, phi1, h2, phi2, h3, phi3);
+        py::dict d;
+        d["behaviour"] = e.behaviour;
+        d["observed_order"] = e.observed_order ? py::cast(*e.observed_order) : py::none();
+        d["order_plausible"] = e.order_plausible;
+        d["extrapolated"] = e.extrapolated ? py::cast(*e.extrapolated) : py::none();
+        d["approximate_relative_error"] = e.approximate_relative_error;
+        d["extrapolated_relative_error"] =
+            e.extrapolated_relative_error ? py::cast(*e.extrapolated_relative_error) : py::none();
+        d["gci_fine"] = e.gci_fine ? py::cast(*e.gci_fine) : py::none();
+        return d;
+      },
+      py::arg("h1"), py::arg("phi1"), py::arg("h2"), py::arg("phi2"), py::arg("h3"), py::arg("phi3"),
+      "Three-grid Richardson extrapolation (Celik et al. 2008) of results phi1..3 at cell sizes h1 < h2 < h3: "
+      "dict with behaviour, observed_order, order_plausible, extrapolated, approximate_relative_error, "
+      "extrapolated_relative_error, gci_fine (fractions). ValueError for unordered or non-finite input.");
 }
 
 }  // namespace mpmcut::python

@@ -163,3 +163,18 @@ def test_ctrl_c_stops_cleanly_then_raises(tmp_path, quick_case, where):
     assert run.summary()["last_checkpoint"].startswith("checkpoints/")
     resumed = mpmcut.Run.resume(run.out, threads=1)
     assert resumed.step_count == run.step_count
+
+
+def test_grid_convergence_reproduces_celik_2008_and_rejects_bad_grids():
+    """The library's three-grid Richardson extrapolation, as `mpmcut convergence` uses it (Celik et al. 2008,
+    Table 1: p = 1.53, extrapolated 6.1685, GCI 2.2 %)."""
+    h = [n ** -0.5 for n in (18000, 8000, 4500)]
+    e = mpmcut.grid_convergence(h[0], 6.063, h[1], 5.972, h[2], 5.863)
+    assert e["behaviour"] == "monotonic" and e["order_plausible"]
+    assert abs(e["observed_order"] - 1.53) < 0.005
+    assert abs(e["extrapolated"] - 6.1685) < 0.0005
+    assert abs(e["gci_fine"] - 0.022) < 0.0005
+    osc = mpmcut.grid_convergence(1.0, 100.0, 1.5, 104.0, 2.25, 98.0)
+    assert osc["behaviour"] == "oscillatory" and osc["observed_order"] is None
+    with pytest.raises(ValueError):
+        mpmcut.grid_convergence(2.0, 1.0, 1.0, 1.0, 4.0, 1.0)
