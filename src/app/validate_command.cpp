@@ -14,6 +14,7 @@
 #include <toml++/toml.h>
 
 #include "analysis/chip_analysis.hpp"
+#include "cutting/cutting_forces.hpp"
 #include "app/plot_command.hpp"
 #include "run/run_case.hpp"
 #include "app/sweep_command.hpp"
@@ -281,6 +282,14 @@ std::string condition_label(const Condition& c) {
 }
 
 
+// A run whose forces did not drift along the steady window by more than the run's own warning limit
+// (summary.json steady_window.drift); a run without the drift (no steady window) is not steady.
+bool steady(const Condition& c) {
+  const auto& fc = c.result.cutting_force_drift_percent;
+  const auto& ft = c.result.thrust_force_drift_percent;
+  return fc && ft && std::abs(*fc) <= kSteadyDriftWarningPercent && std::abs(*ft) <= kSteadyDriftWarningPercent;
+}
+
 // Keeps the run of condition `id` in --records if it is complete; warns where a record of another scene is there.
 void record_run(const ValidateOptions& o, const fs::path& out, const std::string& id) {
   try {
@@ -428,6 +437,10 @@ int run_validation(const ValidateOptions& o) {
   // Errors over the compared conditions (complete force runs), in matrix order.
   std::vector<const Condition*> compared;
   std::vector<std::optional<double>> err_fc, err_ft, err_ratio, err_tc;
+  // The same over the runs that reached a steady state (both forces' drift within the run's warning limit);
+  // none for the others, so that the indices stay those of `compared`.
+  std::vector<std::optional<double>> steady_fc, steady_ft, steady_ratio;
+  std::vector<std::string> drifting;
   struct ThicknessRatio {
     const Condition* c;
     double measured, simulated;
@@ -469,6 +482,13 @@ int run_validation(const ValidateOptions& o) {
     err_ft.push_back(relative_error(ft, m.ff_N));
     err_ratio.push_back(relative_error(ratio, m.ff_N / m.fc_N));
     err_tc.push_back(relative_error(tc, measured_tc));
+    const bool is_steady = steady(c);
+    steady_fc.push_back(is_steady ? relative_error(fc, m.fc_N) : std::nullopt);
+    steady_ft.push_back(is_steady ? relative_error(ft, m.ff_N) : std::nullopt);
+    steady_ratio.push_back(is_steady ? relative_error(ratio, m.ff_N / m.fc_N) : std::nullopt);
+    if (!is_steady) drifting.push_back(fmt::format("`{}` (Fc {:+.0f} %, Ft {:+.0f} %)", c.id,
+                                                   c.result.cutting_force_drift_percent.value_or(NAN),
+                                                   c.result.thrust_force_drift_percent.value_or(NAN)));
   }
   for (const Condition& c : conditions) {
     if (c.kind != "chip" || c.origin.empty()) continue;
@@ -498,6 +518,9 @@ int run_validation(const ValidateOptions& o) {
   error_row("Ft", "N/mm (b = 1 mm assumed)", err_ft);
   const ErrorSummary s_ratio = error_row("Ft/Fc", "-", err_ratio);
   error_row("t_c", "µm", err_tc);
+  error_row("Fc, steady runs", "N/mm (b = 1 mm assumed)", steady_fc);
+  error_row("Ft, steady runs", "N/mm (b = 1 mm assumed)", steady_ft);
+  error_row("Ft/Fc, steady runs", "-", steady_ratio);
   std::vector<std::optional<double>> err_thickness;
   for (const auto& t : thickness_ratios) err_thickness.push_back(relative_error(t.simulated, t.measured));
   const ErrorSummary s_thick = summarize_errors(err_thickness);
@@ -596,6 +619,12 @@ int run_validation(const ValidateOptions& o) {
     s << "Under the stated assumption b = 1 mm; no parameter was tuned per condition (one material set, one friction "
          "coefficient for the whole matrix).\n\n";
     s << "## Errors over the complete force conditions\n\n" << errors.markdown() << "\n";
+    s << fmt::format("\"steady runs\": the {} of {} runs whose mean Fc and Ft change by at most {:g} % between the halves "
+                     "of the steady window (summary.json steady_window.drift).{}\n\n",
+                     compared.size() - drifting.size(), compared.size(), kSteadyDriftWarningPercent,
+                     drifting.empty() ? std::string()
+                                      : " Not steady (the cut is shorter than its transient; a longer cut_length "
+                                        "would move their mean): " + join(drifting, ", ") + ".");
     s << "Error = (simulated − measured mean) / measured mean, per condition; mean and worst of its absolute value over the conditions with "
          "a value. t_c: simulated t0 / (chip thickness ratio of the chip analysis) against the measured mean chip "
          "thickness h_avg (mostly one measurement per condition).\n\n";

@@ -75,7 +75,8 @@ def check_arithmetic(out):
     runs = [r for r in read_csv(os.path.join(out, "validation_runs.csv"))
             if r["kind"] == "forces" and r["status"] == "complete" and r["cutting_force_N_per_mm"]]
     meas = {(float(m["h_mm"]), float(m["vc_m_per_min"])): m for m in measured_rows()}
-    err = {"Fc": [], "Ft": [], "Ft/Fc": [], "t_c": []}
+    err = {"Fc": [], "Ft": [], "Ft/Fc": [], "t_c": [], "Fc, steady runs": [], "Ft, steady runs": [],
+           "Ft/Fc, steady runs": []}
     sim = {}
     for r in runs:
         h, v = float(r["h_mm"]), float(r["speed_m_per_min"])
@@ -85,6 +86,10 @@ def check_arithmetic(out):
         err["Fc"].append(abs(fc / float(m["Fc_mean_N"]) - 1))
         err["Ft"].append(abs(ft / float(m["Ff_mean_N"]) - 1))
         err["Ft/Fc"].append(abs((ft / fc) / (float(m["Ff_mean_N"]) / float(m["Fc_mean_N"])) - 1))
+        drifts = [r["Fc_drift_in_window_percent"], r["Ft_drift_in_window_percent"]]
+        if all(drifts) and max(abs(float(d)) for d in drifts) <= 10.0:
+            for q in ("Fc", "Ft", "Ft/Fc"):
+                err[q + ", steady runs"].append(err[q][-1])
         if r["chip_thickness_ratio"] and m["chip_thickness_um"]:
             tc = h * 1e3 / float(r["chip_thickness_ratio"])
             err["t_c"].append(abs(tc / float(m["chip_thickness_um"]) - 1))
