@@ -114,6 +114,30 @@ std::vector<char> chip_particles(const Particles& p, const ChipAnalysisSetup& s)
   return chip;
 }
 
+namespace {
+
+// Whether a one-piece chip's type sits at a threshold: near serrated_degree, or deep enough to be serrated
+// but with fewer teeth than the rule asks (a pitch longer than the analysed profile can hold twice).
+void classify_confidence(ChipAnalysis& a, const ChipThresholds& th) {
+  a.classification_confidence = "clear";
+  if (a.classification != "serrated" && a.classification != "continuous") return;
+  const double gs = a.segmentation.degree.value_or(0.0);
+  if (a.classification == "continuous" && gs >= th.serrated_degree) {
+    a.classification_confidence = "marginal";
+    a.classification_note = fmt::format(
+        "segmentation degree {:.2f} is at or above the serrated threshold {:g}, but the profile shows {} tooth(s) "
+        "where {} are needed: the pitch may be longer than the analysed chip",
+        gs, th.serrated_degree, a.segmentation.segments, th.serrated_min_segments);
+  } else if (std::abs(gs - th.serrated_degree) < th.marginal_degree_band) {
+    a.classification_confidence = "marginal";
+    a.classification_note =
+        fmt::format("segmentation degree {:.2f} is within {:g} of the serrated threshold {:g}: weakly segmented", gs,
+                    th.marginal_degree_band, th.serrated_degree);
+  }
+}
+
+}  // namespace
+
 ChipAnalysis analyze_chip(const Particles& p, const ChipAnalysisSetup& s) {
   const ChipThresholds& th = s.thresholds;
   const double t0 = s.uncut_chip_thickness_m, h = s.cell_size_m, d = s.particle_spacing_m();
@@ -204,6 +228,7 @@ ChipAnalysis analyze_chip(const Particles& p, const ChipAnalysisSetup& s) {
   } else {
     a.classification = "continuous";
   }
+  classify_confidence(a, th);
 
   // --- Shear bands ---------------------------------------------------------------------------
   if (!chip.empty()) {
@@ -308,6 +333,8 @@ nlohmann::json chip_json(const ChipAnalysis& a) {
   j["time_s"] = a.time_s;
   j["tool_travel_m"] = a.tool_travel_m;
   j["classification"] = a.classification;
+  j["classification_confidence"] = a.classification_confidence;
+  if (!a.classification_note.empty()) j["classification_note"] = a.classification_note;
   j["cells_across_uncut_chip"] = a.cells_per_feed;
   j["resolution_note"] = a.resolution_note.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.resolution_note);
   j["particles"] = a.chip_particles;
@@ -357,8 +384,10 @@ std::string chip_summary_text(const ChipAnalysis& a) {
     return v ? fmt::format(fmt::runtime(f), *v) : std::string("-");
   };
   const Segmentation& g = a.segmentation;
-  std::string s = fmt::format("chip at t = {:.4g} s (tool travel {:.1f} um): {}, {} particles, {} piece(s)\n", a.time_s,
-                              a.tool_travel_m * 1e6, a.classification, a.chip_particles, a.pieces);
+  std::string s = fmt::format("chip at t = {:.4g} s (tool travel {:.1f} um): {}{}, {} particles, {} piece(s)\n",
+                              a.time_s, a.tool_travel_m * 1e6, a.classification,
+                              a.classification_confidence == "marginal" ? " (marginal: " + a.classification_note + ")" : "",
+                              a.chip_particles, a.pieces);
   s += fmt::format("  thickness: mean {}, peaks {}, valleys {}; segmentation degree Gs {}; {} segment(s), pitch {}\n",
                    um(g.mean_thickness_m), um(g.peak_height_m), um(g.valley_height_m), num(g.degree, "{:.2f}"),
                    g.segments, um(g.pitch_m));

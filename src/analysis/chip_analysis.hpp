@@ -34,6 +34,9 @@ struct ChipThresholds {
   double prominence_spacings = 1.5;        // ... and at least this many d (one particle is not a tooth)
   double serrated_degree = 0.1;            // Gs at or above: serrated (one piece) ...
   std::size_t serrated_min_segments = 2;   // ... with at least this many teeth (a repeating pattern)
+  // Reporting margin: a one-piece chip whose Gs lies within this of serrated_degree, or that is as deep
+  // as a serrated one but shows fewer teeth, is classified "marginal": the type may flip with the grid.
+  double marginal_degree_band = 0.1;
   double band_strain_percentile = 0.8;     // band particles: plastic strain above this percentile of the chip ...
   double band_strain_over_median = 1.5;    // ... and above this multiple of the chip's median
   double band_tool_distance_cells = 1.5;   // bands ignore the secondary shear zone within this many h of the tool
@@ -85,6 +88,9 @@ struct ChipAnalysis {
   std::size_t chip_particles = 0;
   double chip_mass_kg_per_m = 0.0;
   std::string classification;           // none, continuous, serrated, discontinuous
+  // "clear", or "marginal" where the classification sits at a threshold (classification_note says which)
+  std::string classification_confidence;
+  std::string classification_note;
   double cells_per_feed = 0.0;          // t0 / h: how well the grid resolves the chip
   std::string resolution_note;          // non-empty when t0/h is below the resolved threshold
   std::size_t pieces = 0;               // significant pieces

@@ -43,6 +43,14 @@ struct SweepOptions {
   bool no_plots = false;
 };
 
+// "yes" when two runs have the same chip type, else the change, marked where either sits at a threshold
+// of the classification (chip_analysis.hpp: a flip there says little about convergence).
+std::string chip_type_change(const CaseResult& a, const CaseResult& b) {
+  if (a.chip_classification == b.chip_classification) return "yes";
+  const bool marginal = a.chip_classification_confidence == "marginal" || b.chip_classification_confidence == "marginal";
+  return a.chip_classification + " → " + b.chip_classification + (marginal ? " (marginal)" : "");
+}
+
 int run_sweep(const SweepOptions& o, const CLI::App& app) {
   if (!fs::exists(o.case_file)) {
     std::cerr << "error: case file " << o.case_file << " not found\n";
@@ -124,12 +132,12 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
                    "mass_scaling_factor", "status", "mean_cutting_force_N_per_mm",
                    "mean_thrust_force_N_per_mm", "force_window", "chip_thickness_ratio", "max_temperature_K",
                    "shear_zone_max_temperature_K", "tool_chip_max_temperature_K", "chip_classification",
-                   "segmentation_degree", "pitch_um", "segmentation_frequency_kHz", "plastic_work_fraction",
+                   "chip_classification_confidence", "segmentation_degree", "pitch_um", "segmentation_frequency_kHz", "plastic_work_fraction",
                    "damage_fraction", "friction_fraction", "kinetic_elastic_fraction", "numerical_fraction",
                    "wall_time_s", "message"};
   table.headings = {"case", "V (m/s)", "V (m/min)", "h (mm)", "cell (µm)", "cells across h", "mass scaling",
                     "status", "Fc (N/mm)", "Ft (N/mm)", "force window", "t0/tc", "T max (K)", "T shear zone (K)",
-                    "T tool–chip (K)", "chip", "segmentation degree", "pitch (µm)", "frequency (kHz)",
+                    "T tool–chip (K)", "chip", "chip type confidence", "segmentation degree", "pitch (µm)", "frequency (kHz)",
                     "plastic / W", "damage / W", "friction / W", "kinetic+elastic / W", "numerical / W",
                     "wall (s)", "message"};
   int failed = 0;
@@ -149,7 +157,8 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
                           format_number(r.mass_scaling_factor, 3), r.status, format_number(r.cutting_force_N_per_mm),
                           format_number(r.thrust_force_N_per_mm), r.force_basis, format_number(r.chip_thickness_ratio, 3),
                           format_number(r.max_temperature_K),
-                          format_number(r.shear_zone_max_K), format_number(r.tool_chip_max_K), r.chip_classification, format_number(r.segmentation_degree, 3), format_number(r.pitch_um, 3),
+                          format_number(r.shear_zone_max_K), format_number(r.tool_chip_max_K), r.chip_classification,
+                          r.chip_classification_confidence, format_number(r.segmentation_degree, 3), format_number(r.pitch_um, 3),
                           format_number(r.frequency_kHz, 3), format_number(fraction(r.plastic_work_J_per_m), 3),
                           format_number(fraction(r.damage_J_per_m), 3), format_number(fraction(r.friction_J_per_m), 3),
                           format_number(fraction(r.kinetic_elastic_J_per_m), 3),
@@ -192,7 +201,7 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
                                change(a.cutting_force_N_per_mm, b.cutting_force_N_per_mm),
                                change(a.thrust_force_N_per_mm, b.thrust_force_N_per_mm),
                                change(a.chip_thickness_ratio, b.chip_thickness_ratio), change(a.pitch_um, b.pitch_um),
-                               a.chip_classification == b.chip_classification ? "yes" : a.chip_classification + " → " + b.chip_classification});
+                               chip_type_change(a, b)});
         }
       conv.write_csv(out / "convergence.csv");
       s << "## Grid convergence\n\nChange from the second finest to the finest complete resolution of each condition "

@@ -223,6 +223,9 @@ ChipHeadline chip_headline(const RunSummary& s) {
   if (sec.contains("chip") && sec["chip"].is_object() && sec["chip"].contains("classification") &&
       sec["chip"]["classification"].is_string())
     h.classification = sec["chip"]["classification"].get<std::string>();
+  if (sec.contains("chip") && sec["chip"].is_object() && sec["chip"].contains("classification_confidence") &&
+      sec["chip"]["classification_confidence"].is_string())
+    h.classification_confidence = sec["chip"]["classification_confidence"].get<std::string>();
   h.segmentation_degree = section_number(sec, "chip", "segmentation_degree");
   h.pitch_m = section_number(sec, "chip", "pitch_m");
   h.segmentation_frequency_Hz = section_number(sec, "chip", "segmentation_frequency_Hz");

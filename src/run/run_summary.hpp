@@ -77,6 +77,7 @@ RunSummary read_summary(const std::filesystem::path& file);  // throws std::runt
 // Headline values of the observers' sections, for the studies' tables.
 struct ChipHeadline {
   std::string classification;  // empty: no chip analysis
+  std::string classification_confidence;  // "clear" | "marginal" (at a threshold) | "" (not recorded)
   std::optional<double> segmentation_degree, pitch_m, segmentation_frequency_Hz, chip_thickness_ratio;
   std::optional<double> shear_zone_max_K, tool_chip_max_K;  // "temperature" section
 };

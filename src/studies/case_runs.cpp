@@ -247,6 +247,7 @@ CaseResult read_case_result(const fs::path& dir, const fs::path& log_file, int e
   r.shear_zone_max_K = chip.shear_zone_max_K;
   r.tool_chip_max_K = chip.tool_chip_max_K;
   r.chip_classification = chip.classification;
+  r.chip_classification_confidence = chip.classification_confidence;
   r.segmentation_degree = chip.segmentation_degree;
   if (chip.pitch_m) r.pitch_um = *chip.pitch_m * 1e6;
   if (chip.segmentation_frequency_Hz) r.frequency_kHz = *chip.segmentation_frequency_Hz * 1e-3;

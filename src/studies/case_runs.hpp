@@ -40,6 +40,7 @@ struct CaseResult {
   std::optional<double> max_temperature_K;
   std::optional<double> shear_zone_max_K, tool_chip_max_K;  // summary.json "temperature" (mpmcut analyze)
   std::string chip_classification;  // from summary.json "chip" (mpmcut analyze); blank if absent
+  std::string chip_classification_confidence;  // "clear" | "marginal" (at a threshold) | blank
   std::optional<double> segmentation_degree, pitch_um, frequency_kHz;
   std::optional<double> chip_thickness_ratio;  // r = t0 / t_c from the chip analysis
   std::optional<double> wall_time_s;

@@ -80,6 +80,7 @@ TEST(ChipAnalysis, StraightChipIsContinuousWithItsThicknessRatio) {
   const double tc = 150e-6;
   const ChipAnalysis a = analyze_chip(chip_particles_of(1e-3, [&](double) { return tc; }), s);
   EXPECT_EQ(a.classification, "continuous");
+  EXPECT_EQ(a.classification_confidence, "clear");
   EXPECT_EQ(a.pieces, 1u);
   EXPECT_NEAR(*a.segmentation.mean_thickness_m, tc, 1e-12);
   EXPECT_EQ(*a.segmentation.degree, 0.0);
@@ -111,6 +112,7 @@ TEST(ChipAnalysis, SawtoothChipIsSerrated) {
   const ChipAnalysis a = analyze_chip(
       chip_particles_of(1e-3, [&](double y) { return h + (H - h) * std::fmod(y, pitch) / pitch; }), s);
   EXPECT_EQ(a.classification, "serrated");
+  EXPECT_EQ(a.classification_confidence, "clear");
   EXPECT_EQ(a.pieces, 1u);
   EXPECT_GE(a.segmentation.segments, 7u);
   EXPECT_NEAR(*a.segmentation.degree, (H - h) / H, 0.06);
@@ -169,6 +171,49 @@ TEST(ChipAnalysis, SetupNeedsTheWorkpieceAndTheTool) {
 TEST(ChipAnalysis, AnalyzeCommandRefusesWhatIsNotACuttingResult) {
   EXPECT_EQ(analyze_result_directory("/nonexistent/mpmcut_result", "last"), 2);
   EXPECT_EQ(analyze_result_directory(std::filesystem::temp_directory_path(), "last"), 2);
+}
+
+}  // namespace
+}  // namespace mpmcut
+
+namespace mpmcut {
+namespace {
+
+// A weakly toothed chip (Gs ~ 0.19, the default cut's at t0/12) is serrated but marginal: within the band
+// of the threshold, where the type flips with the grid. Deeper teeth (Gs 0.5) are clear.
+TEST(ChipAnalysis, WeakTeethAreAMarginalSerration) {
+  const ChipAnalysisSetup s = synthetic_setup();
+  const auto sawtooth = [&](double h, double H) {
+    const double pitch = 100e-6;
+    return analyze_chip(chip_particles_of(1e-3, [&](double y) { return h + (H - h) * std::fmod(y, pitch) / pitch; }), s);
+  };
+  const ChipAnalysis weak = sawtooth(130e-6, 160e-6);
+  EXPECT_EQ(weak.classification, "serrated");
+  EXPECT_EQ(weak.classification_confidence, "marginal");
+  EXPECT_NE(weak.classification_note.find("within 0.1 of the serrated threshold"), std::string::npos)
+      << weak.classification_note;
+  EXPECT_EQ(chip_json(weak)["classification_confidence"], "marginal");
+  const ChipAnalysis deep = sawtooth(80e-6, 160e-6);
+  EXPECT_EQ(deep.classification_confidence, "clear");
+}
+
+// One deep tooth on a short chip: as deep as a serrated chip, but the rule needs two teeth, so it is
+// "continuous" and marked marginal (its pitch may be longer than the chip).
+TEST(ChipAnalysis, OneDeepToothIsAMarginalContinuousChip) {
+  const ChipAnalysisSetup s = synthetic_setup();
+  // Thickness along the chip, um: 150, down to a gullet of 90, up to one crest of 160, then 100 to the end.
+  const auto profile = [](double y) {
+    const double u = y * 1e6;
+    const double t = u < 300 ? 150 : u < 350 ? 150 - 60 * (u - 300) / 50 : u < 600 ? 90 + 70 * (u - 350) / 250
+                     : u < 650 ? 160 - 60 * (u - 600) / 50 : 100;
+    return t * 1e-6;
+  };
+  const ChipAnalysis a = analyze_chip(chip_particles_of(1e-3, profile), s);
+  ASSERT_LT(a.segmentation.segments, 2u);
+  ASSERT_GE(a.segmentation.degree.value_or(0.0), 0.1);
+  EXPECT_EQ(a.classification, "continuous");
+  EXPECT_EQ(a.classification_confidence, "marginal");
+  EXPECT_NE(a.classification_note.find("tooth"), std::string::npos) << a.classification_note;
 }
 
 }  // namespace
