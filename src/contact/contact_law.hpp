@@ -39,6 +39,27 @@ inline ContactCorrection coulomb_rigid_correction(const Vec2& rel, const Vec2& n
   return c;
 }
 
+// Contact with a gap (ContactDetection::Gap): the material may approach the rigid surface at up to
+// `max_approach` (m/s, >= 0: the gap over the step), not faster. Where it approaches faster, the normal
+// velocity is raised to -max_approach; where `force`, it is set to -max_approach whatever its sign (the
+// MUSL re-map of a node the momentum update constrained). Friction is Coulomb on that normal change: the
+// slip is reduced by at most mu |dv_n|, to sticking at most.
+inline ContactCorrection coulomb_rigid_gap_correction(const Vec2& rel, const Vec2& normal, double mu,
+                                                      double max_approach, bool force = false) {
+  const double vn = rel.dot(normal);
+  const double vn_new = force ? -max_approach : std::max(vn, -max_approach);
+  const Vec2 vt = rel - vn * normal;
+  const double vt_norm = vt.norm();
+  const double dvn = std::abs(vn_new - vn);
+  const double reduction = std::min(vt_norm, mu * dvn);
+  ContactCorrection c;
+  c.sliding = vt_norm > mu * dvn;
+  c.friction_dv = reduction;
+  c.slip_after = vt_norm - reduction;
+  c.new_relative = vn_new * normal + (vt_norm > 0.0 ? Vec2(vt * (1.0 - reduction / vt_norm)) : Vec2::Zero());
+  return c;
+}
+
 // What the contact did at one grid node (or, for the safeguard, one particle) in one step.
 struct ContactRecord {
   int rigid_body = 0;           // index into the scene's rigid bodies

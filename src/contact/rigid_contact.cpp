@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/stencil.hpp"
 
@@ -74,12 +75,48 @@ void RigidContact::compute_particle_weights(const Particles& P, const Grid& G, s
   }
 }
 
+// Gap detection: where the material really is, at the resolution of its particles. A GIMP particle's
+// domain reaches lp beyond its centre, so the material's boundary facing the surface is at d - lp. A node
+// takes the smallest gap among the particles its stencil reaches, with the exact outward normal at that
+// particle. Unlike the node test there is no band of a fixed fraction of a cell: contact starts when the
+// domains touch the surface, on every grid.
+void RigidContact::compute_node_gaps(const Particles& P, const Grid& G, std::span<const ShapeFunction> body_shapes,
+                                     const std::vector<RigidBodyState>& bodies) {
+  const std::size_t nn = G.node_count();
+  gap_.resize(geometry_.size());
+  normal_.resize(geometry_.size());
+  for (std::size_t r = 0; r < geometry_.size(); ++r) {
+    std::vector<double>& gap = gap_[r];
+    std::vector<Vec2>& N = normal_[r];
+    gap.assign(nn, std::numeric_limits<double>::infinity());
+    N.assign(nn, Vec2::Zero());
+    const RigidPolygon& geom = geometry_[r];
+    const Vec2 shift = bodies[r].displacement;
+    const Vec2 lo = geom.lower() + shift - Vec2::Constant(2.0 * G.h), hi = geom.upper() + shift + Vec2::Constant(2.0 * G.h);
+    for (std::size_t p = 0; p < P.size(); ++p) {
+      const Vec2 x = P.position[p];
+      if (x.x() < lo.x() || x.x() > hi.x() || x.y() < lo.y() || x.y() > hi.y()) continue;
+      Vec2 normal;
+      const ShapeFunction& shape = body_shapes[P.body[p]];
+      const double g = geom.signed_distance(x - shift, normal) - shape.half_width();
+      if (g > 2.0 * G.h) continue;  // no node within reach can need it
+      for_each_stencil_weight(G, stencil_at(G, shape, x), [&](int n, double w) {
+        if (w > 0.0 && g < gap[n]) {
+          gap[n] = g;
+          N[n] = normal;
+        }
+      });
+    }
+  }
+}
+
 // The rigid body has infinite mass, so at a contact node only the material's velocity changes.
 // Contact holds where the material approaches the rigid surface and its mean position at the node
 // lies within contact_distance of it (no one-cell gap), or, with particle detection, on the node's
-// contact weight. The normal is the exact outward normal of the rigid outline. Normal approach is
-// removed; the tangential slip is reduced by at most mu times the normal change (Coulomb
-// stick/slip). Nodes with velocity boundary conditions are never changed.
+// contact weight, or, with gap detection, where it approaches faster than its gap closes in the
+// step. The normal is the exact outward normal of the rigid outline. Normal approach is removed (gap
+// detection: cut to the gap-closing speed); the tangential slip is reduced by at most mu times the
+// normal change (Coulomb stick/slip). Nodes with velocity boundary conditions are never changed.
 void RigidContact::apply(ContactPass pass, double dt, Grid& G, std::vector<RigidBodyState>& bodies,
                          EnergyTotals& energy) {
   if (geometry_.empty()) return;
@@ -110,12 +147,17 @@ void RigidContact::apply(ContactPass pass, double dt, Grid& G, std::vector<Rigid
         const Vec2 xbar = G.mass_position[n] / m;
         Vec2 normal;
         double weight = 1.0;
-        if (settings_.particle_detection) {
+        double max_approach = 0.0;  // gap detection: the approach speed that just closes the gap in this step
+        if (settings_.detection == ContactDetection::Particle) {
           weight = std::min(1.0, weight_[r][n] / m);
           if (weight <= 0.0) continue;
           const double nn = normal_[r][n].norm();
           if (nn <= 0.0) continue;
           normal = normal_[r][n] / nn;
+        } else if (settings_.detection == ContactDetection::Gap) {
+          if (!std::isfinite(gap_[r][n])) continue;
+          normal = normal_[r][n];
+          max_approach = std::max(0.0, gap_[r][n]) / dt;
         } else {
           const double dist = geom.signed_distance(xbar - shift, normal);
           if (dist > cutoff) continue;
@@ -127,11 +169,14 @@ void RigidContact::apply(ContactPass pass, double dt, Grid& G, std::vector<Rigid
           // strain update must see the same constraint that moved the particles (an approach
           // test here lets the strain velocity disagree with the motion and creates energy).
           if (!G.in_contact[n]) continue;
-        } else if (vn >= 0.0) {
-          continue;  // separating
+        } else if (vn >= -max_approach) {
+          continue;  // separating, or closing no more than the gap
         }
         if (pass == ContactPass::AfterUpdate) G.in_contact[n] = 1;
-        const ContactCorrection cc = coulomb_rigid_correction(rel, normal, mu, weight);
+        const ContactCorrection cc =
+            settings_.detection == ContactDetection::Gap
+                ? coulomb_rigid_gap_correction(rel, normal, mu, max_approach, pass == ContactPass::MuslRemap)
+                : coulomb_rigid_correction(rel, normal, mu, weight);
         const Vec2& new_rel = cc.new_relative;
         const Vec2 dv = new_rel - rel;
         v[n] = vr + new_rel;

@@ -38,7 +38,7 @@ struct NodeBox {
 
 struct RigidContactSettings {
   double contact_distance = 0.0;    // m: a node's material within this of the surface can be in contact
-  bool particle_detection = false;  // contact weights from the particles (ContactDetection::Particle)
+  ContactDetection detection = ContactDetection::Node;
   double node_mass_cutoff = 0.0;    // kg/m: lighter nodes count as empty
 };
 
@@ -59,6 +59,12 @@ class RigidContact {
   // carried by particles in contact, and their mean surface normal.
   void compute_particle_weights(const Particles& particles, const Grid& grid, std::span<const ShapeFunction> body_shapes,
                                 double inertia_factor, const std::vector<RigidBodyState>& bodies);
+
+  // Gap detection (before the first pass): per node, the gap between the rigid surface and the nearest
+  // particle domain that the node's stencil reaches (signed distance of the particle's centre minus its
+  // half-width lp; <= 0: touching or overlapping), and that surface's outward normal.
+  void compute_node_gaps(const Particles& particles, const Grid& grid, std::span<const ShapeFunction> body_shapes,
+                         const std::vector<RigidBodyState>& bodies);
 
   // One pass of the nodal law on the pass's grid velocity. The passes after P2G and after the
   // momentum update (whose corrections reach the particles) record the impulse on each body, its
@@ -85,7 +91,8 @@ class RigidContact {
   bool has_friction_ = false;
   RigidContactSettings settings_;
   std::vector<std::vector<double>> weight_;  // particle detection: per body, per node: sum S m phi, kg/m
-  std::vector<std::vector<Vec2>> normal_;    // per body, per node: sum S m phi n
+  std::vector<std::vector<Vec2>> normal_;    // per body, per node: sum S m phi n (particle); the normal (gap)
+  std::vector<std::vector<double>> gap_;     // gap detection: per body, per node: nearest domain's gap, m
   std::vector<ContactRecord> records_;
   NodeBox heated_;
   long pushed_out_ = 0;

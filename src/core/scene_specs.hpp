@@ -11,8 +11,11 @@ namespace mpmcut {
 
 enum class ShapeFunctionKind { Linear, UGimp };
 enum class TimeScheme { USL, MUSL };
-// How rigid contact finds its nodes: from the nodes' material positions, or from the particles.
-enum class ContactDetection { Node, Particle };
+// How rigid contact finds the material in contact (docs/cutting.md, "Contact"): Node, the node's material
+// position within contact_distance_cells of the surface; Particle, the share of the node's mass whose
+// particle domains reach the surface; Gap, the gap between the surface and the nearest particle domain of
+// the node, which the material may close within the step but not cross.
+enum class ContactDetection { Node, Particle, Gap };
 enum class BoundaryKind { Free, Fixed, Roller };  // Roller = slip: normal velocity zero
 
 struct Rectangle {
@@ -111,6 +114,7 @@ struct SolverSpec {
   // closer to the rigid surface than this many cells (position check, no one-cell gap).
   // With contact_detection = Particle: particles within lp + this many cells of the surface are in
   // contact (fully up to lp), and a node takes the share of its mass they carry (docs/cutting.md).
+  // Not used with contact_detection = Gap.
   double contact_distance_cells = 0.5;  // -
   // Mass scaling (docs/mass_scaling.md): the deformable bodies' inertia is multiplied by a factor
   // f >= 1, which lengthens the CFL step by sqrt(f). Heat capacity, conduction, the equation of

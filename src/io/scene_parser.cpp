@@ -258,7 +258,8 @@ SolverSpec read_solver(TableReader t, SolverSpec s) {
   if (s.mass_scaling_target_time_step > 0.0 && s.fixed_time_step > 0.0)
     t.fail("mass_scaling_target_time_step", "has no meaning with a fixed_time_step; give one of them");
   s.contact_detection = t.choice<ContactDetection>(
-      "contact_detection", {{"node", ContactDetection::Node}, {"particle", ContactDetection::Particle}},
+      "contact_detection",
+      {{"node", ContactDetection::Node}, {"particle", ContactDetection::Particle}, {"gap", ContactDetection::Gap}},
       s.contact_detection);
   t.reject_unknown_keys();
   return s;

@@ -100,7 +100,10 @@ void write_scene_tables(const Scene& s, std::ostream& out) {
   out << "contact_distance_cells = " << num(s.solver.contact_distance_cells) << "\n";
   out << "mass_scaling_factor = " << num(s.solver.mass_scaling_factor) << "\n";
   out << "mass_scaling_target_time_step = " << num(s.solver.mass_scaling_target_time_step) << "\n";
-  out << "contact_detection = \"" << (s.solver.contact_detection == ContactDetection::Node ? "node" : "particle")
+  out << "contact_detection = \""
+      << (s.solver.contact_detection == ContactDetection::Node       ? "node"
+          : s.solver.contact_detection == ContactDetection::Particle ? "particle"
+                                                                      : "gap")
       << "\"\n";
 
   out << "\n[output]\n";

@@ -43,7 +43,7 @@ Simulation::Simulation(const Scene& scene) : scene_(scene) {
   node_mass_cutoff_ = 1e-5 * inertia_factor_ * max_density * grid_.h * grid_.h;
   RigidContactSettings contact;
   contact.contact_distance = scene_.solver.contact_distance_cells * grid_.h;
-  contact.particle_detection = scene_.solver.contact_detection == ContactDetection::Particle;
+  contact.detection = scene_.solver.contact_detection;
   contact.node_mass_cutoff = node_mass_cutoff_;
   contact_ = RigidContact(scene_.rigid_bodies, contact);
   mark_boundary_nodes(scene_.boundaries, scene_.thermal, grid_);
@@ -81,7 +81,7 @@ void Simulation::step(double max_dt) {
   apply_rigid_contact(ContactPass::AfterUpdate, dt);    //    contact (force on the bodies, friction work)
   grid_to_particles(dt);                                // 6. G2P: velocity (FLIP/PIC) and position,
   push_particles_out_of_rigid_bodies(dt);               //    the contact safeguard
-  if (scene_.solver.scheme == TimeScheme::MUSL) remap_momentum_musl();  // 7. MUSL remap
+  if (scene_.solver.scheme == TimeScheme::MUSL) remap_momentum_musl(dt);  // 7. MUSL remap
   update_stress(dt);                                    // 8. velocity gradient, constitutive update
   heat_particles(dt);                                   // 9. frictional heat, conduction
   advance_clock(dt);                                    //    new positions, rigid bodies, time
@@ -111,6 +111,8 @@ void Simulation::prepare_rigid_contact() {
   contact_.begin_step(state_.rigid_bodies);
   if (!contact_.empty() && scene_.solver.contact_detection == ContactDetection::Particle)
     contact_.compute_particle_weights(particles_, grid_, shapes_, inertia_factor_, state_.rigid_bodies);
+  if (!contact_.empty() && scene_.solver.contact_detection == ContactDetection::Gap)
+    contact_.compute_node_gaps(particles_, grid_, shapes_, state_.rigid_bodies);
 }
 
 void Simulation::apply_rigid_contact(ContactPass pass, double dt) {
@@ -142,10 +144,10 @@ void Simulation::push_particles_out_of_rigid_bodies(double dt) {
 
 // MUSL: the updated particle momenta back on the grid, constrained again (boundary conditions and
 // contact at the nodes the momentum update found in contact): the velocity of the strain update.
-void Simulation::remap_momentum_musl() {
+void Simulation::remap_momentum_musl(double dt) {
   mpmcut::remap_momentum_musl(particles_, shapes_, inertia_factor_, colouring_, parallel_, grid_);
   apply_velocity_boundary_conditions(BoundaryPhase::AfterUpdate, parallel_, grid_);
-  apply_rigid_contact(ContactPass::MuslRemap, 0.0);
+  apply_rigid_contact(ContactPass::MuslRemap, dt);  // dt: gap detection's allowed approach
 }
 
 void Simulation::update_stress(double dt) {

@@ -76,7 +76,7 @@ class Simulation {
   void update_grid_momentum(double dt);
   void grid_to_particles(double dt);
   void push_particles_out_of_rigid_bodies(double dt);
-  void remap_momentum_musl();
+  void remap_momentum_musl(double dt);
   void update_stress(double dt);
   void heat_particles(double dt);
   void advance_clock(double dt);

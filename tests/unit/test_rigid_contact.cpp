@@ -99,3 +99,37 @@ TEST(RigidContactPasses, MuslPassActsWhereTheUpdatePassFoundContactWhateverTheSi
   EXPECT_EQ(f.grid.velocity_new[other], Vec2(0.0, -0.7));  // approaching, but not found in contact
   EXPECT_EQ(f.bodies[0].impulse, impulse_before);          // the MUSL pass exchanges no force
 }
+
+// The gap law (contact_detection = "gap"): material may approach the surface at up to the speed that
+// closes its gap within the step; faster approach is cut to that speed, and the slip is reduced by mu times
+// the normal change (Coulomb), to sticking at most.
+TEST(ContactLaw, GapCorrectionLimitsTheApproachToTheGapClosingSpeed) {
+  const Vec2 normal(0.0, 1.0);
+  {  // approach 3 m/s, gap closes at 1 m/s: normal change 2 m/s; slip 1 m/s reduced by 0.3 * 2 = 0.6
+    const ContactCorrection c = coulomb_rigid_gap_correction(Vec2(1.0, -3.0), normal, 0.3, 1.0);
+    EXPECT_NEAR((c.new_relative - Vec2(0.4, -1.0)).norm(), 0.0, 1e-15);
+    EXPECT_TRUE(c.sliding);
+    EXPECT_NEAR(c.friction_dv, 0.6, 1e-15);
+    EXPECT_NEAR(c.slip_after, 0.4, 1e-15);
+  }
+  {  // a large normal change sticks: the whole slip 1 m/s is removed, no more
+    const ContactCorrection c = coulomb_rigid_gap_correction(Vec2(1.0, -3.0), normal, 0.8, 0.5);
+    EXPECT_NEAR((c.new_relative - Vec2(0.0, -0.5)).norm(), 0.0, 1e-15);
+    EXPECT_FALSE(c.sliding);
+    EXPECT_NEAR(c.slip_after, 0.0, 1e-15);
+  }
+  {  // touching (gap 0): the approach is removed entirely, as the node law does
+    const ContactCorrection gap = coulomb_rigid_gap_correction(Vec2(1.0, -2.0), normal, 0.3, 0.0);
+    const ContactCorrection node = coulomb_rigid_correction(Vec2(1.0, -2.0), normal, 0.3, 1.0);
+    EXPECT_NEAR((gap.new_relative - node.new_relative).norm(), 0.0, 1e-15);
+  }
+  {  // approach slower than the gap closes: unchanged
+    const ContactCorrection c = coulomb_rigid_gap_correction(Vec2(1.0, -0.5), normal, 0.3, 1.0);
+    EXPECT_NEAR((c.new_relative - Vec2(1.0, -0.5)).norm(), 0.0, 1e-15);
+    EXPECT_EQ(c.friction_dv, 0.0);
+  }
+  {  // forced (the MUSL re-map of a node the update constrained): set to the closing speed even when separating
+    const ContactCorrection c = coulomb_rigid_gap_correction(Vec2(0.0, 0.7), normal, 0.0, 1.0, true);
+    EXPECT_NEAR((c.new_relative - Vec2(0.0, -1.0)).norm(), 0.0, 1e-15);
+  }
+}

@@ -532,5 +532,15 @@ TEST(SceneOverrides, CuttingSpeedReplacesTheOtherSpelling) {
   EXPECT_NE(error_of(si + "cutting_speed_m_per_min = 120\n").find("not both"), std::string::npos);
 }
 
+TEST(SceneWriter, RoundTripsEveryContactDetection) {
+  for (const char* detection : {"node", "particle", "gap"}) {
+    SCOPED_TRACE(detection);
+    const Scene s = parse_scene(kBase, "case.toml", {std::string("solver.contact_detection=\"") + detection + "\""});
+    EXPECT_EQ(round_trip(s).solver.contact_detection, s.solver.contact_detection);
+  }
+  EXPECT_EQ(parse_scene(kBase, "case.toml", {"solver.contact_detection=\"gap\""}).solver.contact_detection,
+            ContactDetection::Gap);
+}
+
 }  // namespace
 }  // namespace mpmcut

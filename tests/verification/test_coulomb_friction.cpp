@@ -165,3 +165,22 @@ TEST(CoulombFriction, ParticleDetectionKeepsFrictionRatioMu) {
                 r.acceleration);
   }
 }
+
+// Gap detection (solver.contact_detection = "gap"): the material may close the gap between its particle
+// domains and the surface within a step, not more; where it is stopped, friction is Coulomb on the normal
+// change. A block pressed on a dragged plate slides with friction mu N at every mu and cell size.
+TEST(CoulombFriction, GapDetectionKeepsFrictionRatioMu) {
+  const double g = 10.0;
+  for (double h : {0.02, 0.01}) {
+    for (double mu : {0.1, 0.3, 0.5}) {
+      SCOPED_TRACE(::testing::Message() << "h = " << h << " m, mu = " << mu);
+      const FrictionRun r = drag_block(h, mu, Vec2(0, -g), Vec2(2.0, 0.0), 0.05, 0.2, ContactDetection::Gap);
+      EXPECT_NEAR(r.normal_impulse, 1000.0 * 0.02 * g * 0.15, 0.05 * 1000.0 * 0.02 * g * 0.15);
+      EXPECT_NEAR(r.ratio, mu, 0.005 * mu);
+      EXPECT_LT(r.worst_node_error, 1e-6);
+      EXPECT_NEAR(r.acceleration, mu * g, 0.02 * mu * g);
+      std::printf("gap detection, h = %.3f m, mu = %.2f: friction / normal = %.6f, a = %.4f m/s^2\n", h, mu,
+                  r.ratio, r.acceleration);
+    }
+  }
+}
