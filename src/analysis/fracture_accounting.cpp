@@ -179,6 +179,18 @@ FractureAccounting account_fracture(const Particles& p, const ChipAnalysisSetup&
   return f;
 }
 
+SurfaceBalance surface_balance(const FractureAccounting& f) {
+  SurfaceBalance b;
+  for (const DissipationRegion& r : f.regions)
+    (r.name == "workpiece" ? b.workpiece_equivalent_crack_length_m : b.chip_equivalent_crack_length_m) +=
+        r.crack_length_m;
+  b.chip_equivalent_crack_length_m += f.removed_crack_length_m;
+  for (double l : f.segment_crack_lengths_m) b.chip_crack_length_m += l;
+  for (double l : f.piece_separation_lengths_m) b.chip_crack_length_m += l;
+  b.machined_surface_length_m = f.machined_surface_length_m;
+  return b;
+}
+
 EnergyPartition energy_partition(double work, double plastic, double damage, double friction, double kinetic,
                                  double elastic, double viscous) {
   EnergyPartition e;
@@ -219,6 +231,17 @@ nlohmann::json fracture_json(const FractureAccounting& f, const EnergyPartition&
                        {"failed_particles", r.failed_particles},
                        {"definition", r.definition}};
   j["regions"] = regions;
+  const SurfaceBalance b = surface_balance(f);
+  const auto ratio = [](double a, double c) { return c > 0.0 ? nlohmann::json(a / c) : nlohmann::json(nullptr); };
+  j["chip"] = {{"equivalent_crack_length_mm", b.chip_equivalent_crack_length_m * 1e3},
+               {"crack_length_mm", b.chip_crack_length_m * 1e3},
+               {"crack_length_ratio", ratio(b.chip_equivalent_crack_length_m, b.chip_crack_length_m)},
+               {"definition", "damage of the chip's regions and of removed particles, as crack length, against the "
+                              "chip's own cracks (gullets + piece separations)"}};
+  j["workpiece"] = {{"equivalent_crack_length_mm", b.workpiece_equivalent_crack_length_m * 1e3},
+                    {"machined_surface_length_mm", b.machined_surface_length_m * 1e3},
+                    {"crack_length_ratio", ratio(b.workpiece_equivalent_crack_length_m, b.machined_surface_length_m)},
+                    {"definition", "damage of the workpiece region, as crack length, against the machined surface"}};
   j["energy_partition"] = {{"tool_work_J_per_m", e.tool_work_J_per_m},
                            {"plastic", e.plastic},
                            {"damage", e.damage},
@@ -240,6 +263,11 @@ std::string fracture_summary_text(const FractureAccounting& f, const EnergyParti
   s += "  where (crack mm):";
   for (const DissipationRegion& r : f.regions) s += fmt::format(" {} {:.3f};", r.name, r.crack_length_m * 1e3);
   s += fmt::format(" removed {:.3f}\n", f.removed_crack_length_m * 1e3);
+  const SurfaceBalance b = surface_balance(f);
+  s += fmt::format("  chip: damage = {:.3f} mm of crack against {:.3f} mm of its own cracks; workpiece: {:.3f} mm against "
+                   "{:.3f} mm of machined surface\n",
+                   b.chip_equivalent_crack_length_m * 1e3, b.chip_crack_length_m * 1e3,
+                   b.workpiece_equivalent_crack_length_m * 1e3, b.machined_surface_length_m * 1e3);
   s += fmt::format(
       "  tool work {:.3g} J/m: plastic {:.1f} %, damage {:.1f} %, friction {:.1f} %, kinetic {:.1f} %, elastic {:.1f} "
       "%, viscous {:.1f} %, remainder {:.1f} %\n",

@@ -53,6 +53,20 @@ struct FractureAccounting {
   double total_equivalent_crack_length_m() const { return equivalent_crack_length_m + removed_crack_length_m; }
 };
 
+// The two surfaces a cut makes, each beside the damage that should have made it: the chip's own cracks
+// (gullets + piece separations) against the equivalent crack length of the chip's regions (free-surface
+// layer, interior, fragments) and of the removed particles (which leave as debris of the chip); the
+// machined surface against that of the workpiece region. The one overall ratio mixes the two: in a cut
+// whose machined surface forms by the tool's contact rather than by damage, a chip full of smeared
+// damage can still show a ratio near 1.
+struct SurfaceBalance {
+  double chip_equivalent_crack_length_m = 0.0;
+  double chip_crack_length_m = 0.0;  // gullets + separations
+  double workpiece_equivalent_crack_length_m = 0.0;
+  double machined_surface_length_m = 0.0;
+};
+SurfaceBalance surface_balance(const FractureAccounting& f);
+
 // The crack lengths of the chip analysis: per valley of the profile, the depth of the gullet (the mean
 // thickness of the peaks beside it minus its own), and per significant piece beyond the first, a
 // separation line as long as the chip is thick (mean peak height, else mean thickness, else t0).

@@ -7,6 +7,8 @@
 
 #include "analysis/fracture_accounting.hpp"
 
+#include <nlohmann/json.hpp>
+
 namespace mpmcut {
 namespace {
 
@@ -40,6 +42,31 @@ TEST(FractureAccounting, GulletDepthsAndPieceSeparations) {
   chip_crack_lengths(flat, 100e-6, seg, sep);
   EXPECT_TRUE(seg.empty());
   EXPECT_TRUE(sep.empty());
+}
+
+// The chip's damage is set against the chip's own cracks, the workpiece's against the machined surface.
+TEST(FractureAccounting, SurfaceBalanceSplitsChipFromWorkpiece) {
+  FractureAccounting f;
+  f.regions = {{"workpiece", ""}, {"chip_free_surface_layer", ""}, {"chip_interior", ""}, {"chip_fragments", ""}};
+  f.regions[0].crack_length_m = 0.1e-3;
+  f.regions[1].crack_length_m = 0.3e-3;
+  f.regions[2].crack_length_m = 0.2e-3;
+  f.regions[3].crack_length_m = 0.05e-3;
+  f.removed_crack_length_m = 0.05e-3;
+  f.machined_surface_length_m = 0.4e-3;
+  f.segment_crack_lengths_m = {20e-6, 30e-6};
+  f.piece_separation_lengths_m = {50e-6};
+  const SurfaceBalance b = surface_balance(f);
+  EXPECT_NEAR(b.chip_equivalent_crack_length_m, 0.6e-3, 1e-15);
+  EXPECT_NEAR(b.chip_crack_length_m, 0.1e-3, 1e-15);
+  EXPECT_NEAR(b.workpiece_equivalent_crack_length_m, 0.1e-3, 1e-15);
+  EXPECT_NEAR(b.machined_surface_length_m, 0.4e-3, 1e-15);
+  const nlohmann::json j = fracture_json(f, EnergyPartition{});
+  EXPECT_NEAR(j["chip"]["crack_length_ratio"].get<double>(), 6.0, 1e-12);
+  EXPECT_NEAR(j["workpiece"]["crack_length_ratio"].get<double>(), 0.25, 1e-12);
+  f.segment_crack_lengths_m.clear();
+  f.piece_separation_lengths_m.clear();
+  EXPECT_TRUE(fracture_json(f, EnergyPartition{})["chip"]["crack_length_ratio"].is_null());  // no crack: no ratio
 }
 
 TEST(FractureAccounting, BoundaryOfALatticeIsItsOuterRing) {
