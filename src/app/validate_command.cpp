@@ -228,7 +228,9 @@ std::string resolution_text(const ValidateOptions& o) {
       "cells across the measured edge radius r_n (--cells-per-edge-radius; force conditions), 2×2 particles per "
       "cell; chip-type conditions at t0/{} (the least the chip analysis needs to resolve segments; their 5 µm edge is "
       "the preset's, not measured, and sets no limit). Tool travel 6·max(t0, r_n) (the steady window, after "
-      "max(40 % of the cut, 3 t0), is then at least 3 t0 long); workpiece height t0 + max(3 t0, 2 r_n)",
+      "max(40 % of the cut, 3 t0), is then at least 3 t0 long); workpiece height t0 + max(3 t0, 2 r_n), rounded up "
+      "by the preset so that the machined surface lies on a row of grid nodes (docs/cutting.md, \"Grid phase of the "
+      "tool tip\")",
       o.cells_per_feed, o.cells_per_edge_radius, chip_cells_per_feed(o.cells_per_feed));
 }
 

@@ -21,6 +21,13 @@ double cutting_cell_size(const CuttingParameters& c) {
   return c.cell_size > 0.0 ? c.cell_size : c.uncut_chip_thickness / 10.0;
 }
 
+double machined_surface_on_node_row(double workpiece_height, double uncut_chip_thickness, double cell_size) {
+  const double rows = (workpiece_height - uncut_chip_thickness) / cell_size;
+  // A height that is aligned up to round-off stays exactly as given (the same scene as before).
+  if (std::abs(rows - std::round(rows)) < 1e-6) return workpiece_height;
+  return uncut_chip_thickness + std::ceil(rows) * cell_size;
+}
+
 Scene build_cutting_scene(const CuttingParameters& c, const MaterialParameters& material) {
   const double t0 = c.uncut_chip_thickness;
   const double h = cutting_cell_size(c);
@@ -43,8 +50,11 @@ Scene build_cutting_scene(const CuttingParameters& c, const MaterialParameters& 
   s.title = fmt::format("Orthogonal cut of {}: V = {:.4g} m/s, t0 = {:.4g} mm, rake {:.3g} deg, r = {:.3g} um",
                         material.name, c.cutting_speed, t0 * 1e3, c.rake_angle_deg, c.edge_radius * 1e6);
   // Workpiece [0, L] x [0, H], clamped at its left end and its base; the tool starts half a
-  // cell beyond its right end and moves left.
-  const double L = workpiece_length, H = workpiece_height;
+  // cell beyond its right end and moves left. H is rounded up to t0 + a whole number of cells, so
+  // that the machined surface, where the tool's lowest point runs, lies on a row of nodes on every
+  // grid: where the tip sits within its cell changed the thrust force by -33 % to +11 % at t0/10
+  // with a 34 um edge (docs/cutting.md, "Grid phase of the tool tip").
+  const double L = workpiece_length, H = machined_surface_on_node_row(workpiece_height, t0, h);
   const double tool_start = L + 0.5 * h;
   s.grid.cell_size = h;
   s.grid.min = Vec2(0.0, 0.0);

@@ -14,6 +14,11 @@ Scene build_cutting_scene(const CuttingParameters& c, const MaterialParameters& 
 // The grid's cell size: cutting.cell_size, or t0 / 10 when it is not given, m.
 double cutting_cell_size(const CuttingParameters& c);
 
+// The workpiece height the preset uses: `workpiece_height` rounded up to t0 + a whole number of
+// cells, so that the machined surface (y = H - t0, the tool's lowest point) lies on a row of grid
+// nodes (the grid starts at y = 0), m.
+double machined_surface_on_node_row(double workpiece_height, double uncut_chip_thickness, double cell_size);
+
 // The tool travel after which the chip is taken as formed (start of the steady window), m.
 double steady_window_start_travel(const CuttingParameters& c);
 

@@ -1,0 +1,49 @@
+// The cutting preset's geometry (src/cutting/cutting_scene.*): the machined surface, where the tool's
+// lowest point runs, lies on a row of grid nodes on every grid, so that no result depends on where the
+// tip happens to sit within its cell (docs/cutting.md, "Grid phase of the tool tip").
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "cutting/cutting_scene.hpp"
+#include "physics/material_parameters.hpp"
+
+namespace mpmcut {
+namespace {
+
+double rows_below_machined_surface(const Scene& s, double t0) {
+  const double H = s.bodies[0].shape.rectangle.max.y();
+  return (H - t0 - s.grid.min.y()) / s.grid.cell_size;
+}
+
+TEST(CuttingScene, MachinedSurfaceLiesOnANodeRowOnEveryGrid) {
+  MaterialParameters m;
+  m.name = "ti";
+  // The validation's rule cell = min(t0/10, r_n/4) gives cells that do not divide the depth
+  // t0 + max(3 t0, 2 r_n) - t0: 9.825 um cells put the tip mid-cell in 300 um.
+  for (double cell : {10e-6, 9.825e-6, 8.6e-6, 7.35e-6, 6.25e-6}) {
+    for (double height : {0.0, 0.4e-3, 0.4e-3 + 0.3 * cell}) {
+      SCOPED_TRACE(::testing::Message() << "cell " << cell << " m, workpiece_height " << height << " m");
+      CuttingParameters c;
+      c.cutting_speed = 2.0;
+      c.uncut_chip_thickness = 0.1e-3;
+      c.cut_length = 0.2e-3;
+      c.cell_size = cell;
+      c.workpiece_height = height;
+      const Scene s = build_cutting_scene(c, m);
+      const double rows = rows_below_machined_surface(s, c.uncut_chip_thickness);
+      EXPECT_NEAR(rows, std::round(rows), 1e-6);
+      // Rounded up, by less than a cell: never shallower than asked.
+      const double asked = height > 0.0 ? height : 4.0 * c.uncut_chip_thickness;
+      const double H = s.bodies[0].shape.rectangle.max.y();
+      EXPECT_GE(H, asked - 1e-12);
+      EXPECT_LT(H, asked + cell);
+    }
+  }
+  // An aligned height stays exactly as it is (300 um / 10 um is 29.999... in floating point).
+  EXPECT_EQ(machined_surface_on_node_row(0.4e-3, 0.1e-3, 10e-6), 0.4e-3);
+  EXPECT_EQ(machined_surface_on_node_row(0.4e-3, 0.1e-3, 0.1e-3 / 24.0), 0.4e-3);
+}
+
+}  // namespace
+}  // namespace mpmcut
