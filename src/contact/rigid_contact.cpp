@@ -20,6 +20,21 @@ void book_contact_impulse(RigidBodyState& body, const Vec2& impulse, double work
   energy.external_work += work;
 }
 
+// Calls visit(p, x, shape, d, normal) for each particle p within two cells of the rigid body's bounding box,
+// with its signed distance d from the body's outline (shifted by `shift`) and the outward normal there.
+template <class Visit>
+void for_each_particle_near(const Particles& P, const Grid& G, std::span<const ShapeFunction> body_shapes,
+                            const RigidPolygon& geom, const Vec2& shift, Visit&& visit) {
+  const Vec2 lo = geom.lower() + shift - Vec2::Constant(2.0 * G.h), hi = geom.upper() + shift + Vec2::Constant(2.0 * G.h);
+  for (std::size_t p = 0; p < P.size(); ++p) {
+    const Vec2 x = P.position[p];
+    if (x.x() < lo.x() || x.x() > hi.x() || x.y() < lo.y() || x.y() > hi.y()) continue;
+    Vec2 normal;
+    const double d = geom.signed_distance(x - shift, normal);
+    visit(p, x, body_shapes[P.body[p]], d, normal);
+  }
+}
+
 }  // namespace
 
 RigidContact::RigidContact(const std::vector<RigidBodySpec>& bodies, const RigidContactSettings& settings)
@@ -54,24 +69,18 @@ void RigidContact::compute_particle_weights(const Particles& P, const Grid& G, s
     std::vector<Vec2>& N = normal_[r];
     W.assign(nn, 0.0);
     N.assign(nn, Vec2::Zero());
-    const RigidPolygon& geom = geometry_[r];
     const Vec2 shift = bodies[r].displacement;
-    const Vec2 lo = geom.lower() + shift - Vec2::Constant(2.0 * G.h), hi = geom.upper() + shift + Vec2::Constant(2.0 * G.h);
-    for (std::size_t p = 0; p < P.size(); ++p) {
-      const Vec2 x = P.position[p];
-      if (x.x() < lo.x() || x.x() > hi.x() || x.y() < lo.y() || x.y() > hi.y()) continue;
-      Vec2 normal;
-      const ShapeFunction& shape = body_shapes[P.body[p]];
+    for_each_particle_near(P, G, body_shapes, geometry_[r], shift,
+                           [&](std::size_t p, const Vec2& x, const ShapeFunction& shape, double d, const Vec2& normal) {
       const double lp = shape.half_width();
-      const double d = geom.signed_distance(x - shift, normal);
       const double phi = band > 0.0 ? std::clamp(1.0 - (d - lp) / band, 0.0, 1.0) : (d <= lp ? 1.0 : 0.0);
-      if (phi <= 0.0) continue;
+      if (phi <= 0.0) return;
       const double m = inertia_factor * P.mass[p];  // as the grid mass it is compared with
       for_each_stencil_weight(G, stencil_at(G, shape, x), [&](int n, double w) {
         W[n] += w * m * phi;
         N[n] += (w * m * phi) * normal;
       });
-    }
+    });
   }
 }
 
@@ -90,23 +99,18 @@ void RigidContact::compute_node_gaps(const Particles& P, const Grid& G, std::spa
     std::vector<Vec2>& N = normal_[r];
     gap.assign(nn, std::numeric_limits<double>::infinity());
     N.assign(nn, Vec2::Zero());
-    const RigidPolygon& geom = geometry_[r];
     const Vec2 shift = bodies[r].displacement;
-    const Vec2 lo = geom.lower() + shift - Vec2::Constant(2.0 * G.h), hi = geom.upper() + shift + Vec2::Constant(2.0 * G.h);
-    for (std::size_t p = 0; p < P.size(); ++p) {
-      const Vec2 x = P.position[p];
-      if (x.x() < lo.x() || x.x() > hi.x() || x.y() < lo.y() || x.y() > hi.y()) continue;
-      Vec2 normal;
-      const ShapeFunction& shape = body_shapes[P.body[p]];
-      const double g = geom.signed_distance(x - shift, normal) - shape.half_width();
-      if (g > 2.0 * G.h) continue;  // no node within reach can need it
+    for_each_particle_near(P, G, body_shapes, geometry_[r], shift,
+                           [&](std::size_t, const Vec2& x, const ShapeFunction& shape, double d, const Vec2& normal) {
+      const double g = d - shape.half_width();
+      if (g > 2.0 * G.h) return;  // no node within reach can need it
       for_each_stencil_weight(G, stencil_at(G, shape, x), [&](int n, double w) {
         if (w > 0.0 && g < gap[n]) {
           gap[n] = g;
           N[n] = normal;
         }
       });
-    }
+    });
   }
 }
 
