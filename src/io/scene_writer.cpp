@@ -50,6 +50,16 @@ const char* name(BoundaryKind b) {
   return "?";
 }
 
+// The names read_solver accepts (the SceneWriter.RoundTripsEveryContactDetection test keeps them equal).
+const char* name(ContactDetection d) {
+  switch (d) {
+    case ContactDetection::Node: return "node";
+    case ContactDetection::Particle: return "particle";
+    case ContactDetection::Gap: return "gap";
+  }
+  return "?";
+}
+
 
 std::string shape_line(const Shape& s) {
   switch (s.kind) {
@@ -100,11 +110,7 @@ void write_scene_tables(const Scene& s, std::ostream& out) {
   out << "contact_distance_cells = " << num(s.solver.contact_distance_cells) << "\n";
   out << "mass_scaling_factor = " << num(s.solver.mass_scaling_factor) << "\n";
   out << "mass_scaling_target_time_step = " << num(s.solver.mass_scaling_target_time_step) << "\n";
-  out << "contact_detection = \""
-      << (s.solver.contact_detection == ContactDetection::Node       ? "node"
-          : s.solver.contact_detection == ContactDetection::Particle ? "particle"
-                                                                      : "gap")
-      << "\"\n";
+  out << "contact_detection = \"" << name(s.solver.contact_detection) << "\"\n";
 
   out << "\n[output]\n";
   out << "snapshot_interval = " << num(s.output.snapshot_interval) << "\n";
