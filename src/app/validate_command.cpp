@@ -101,6 +101,7 @@ struct ValidateOptions {
   std::vector<std::string> condition_ids;
   std::string material;         // a library set; empty: the default (ti64-cutting)
   std::optional<double> friction;  // Coulomb coefficient; none: the default (0.35)
+  std::optional<double> friction_heat_share;  // none: the preset's (all frictional heat into the workpiece)
 };
 
 ConditionRunSettings run_settings(const ValidateOptions& o) {
@@ -116,6 +117,7 @@ ConditionRunSettings run_settings(const ValidateOptions& o) {
     s.friction = *o.friction;
     s.friction_note = "chosen with --friction";
   }
+  s.friction_heat_share = o.friction_heat_share;
   return s;
 }
 
@@ -668,7 +670,13 @@ int run_validation(const ValidateOptions& o) {
          "Ft/Fc and the ratios between conditions do not depend on it and are the primary comparison.\n"
          "- Rake 0°, clearance 11° (preset defaults): the tool angles are not in the data file. The edge radius of "
          "each force run is the measured mean r_n of its tests. Coulomb friction "
-      << fmt::format("{:g} ({})", settings.friction, settings.friction_note) << ".\n"
+      << fmt::format("{:g} ({})", settings.friction, settings.friction_note)
+      << (settings.friction_heat_share
+              ? fmt::format("; a share {:g} of the frictional heat goes into the workpiece, the rest into the tool "
+                            "(--friction-heat-share)",
+                            *settings.friction_heat_share)
+              : std::string("; all frictional heat goes into the workpiece (the tool is not thermally modelled)"))
+      << ".\n"
       << "- Material: the `" << settings.material << "` set of the material library ("
       << settings.material_note << ")"
       << (settings.material == "ti64-cutting"
@@ -791,6 +799,10 @@ void add_validate_command(CLI::App& app) {
       });
   v->add_option("--friction", o->friction, "Coulomb coefficient at the tool (default 0.35; e.g. a calibrated one)")
       ->check(CLI::Range(0.0, 2.0));
+  v->add_option("--friction-heat-share", o->friction_heat_share,
+                "Share of the frictional heat that goes into the workpiece, the rest into the tool (default 1: all "
+                "of it; [cutting] friction_heat_share)")
+      ->check(CLI::Range(0.0, 1.0));
   v->callback([o]() {
     int code = 0;
     try {

@@ -42,6 +42,7 @@ RigidContact::RigidContact(const std::vector<RigidBodySpec>& bodies, const Rigid
   for (const RigidBodySpec& r : bodies) {
     geometry_.emplace_back(r.polygon, r.rounding_radius);
     friction_.push_back(r.friction);
+    heat_share_.push_back(r.friction_heat_share);
     has_friction_ = has_friction_ || r.friction > 0.0;
   }
 }
@@ -191,13 +192,14 @@ void RigidContact::apply(ContactPass pass, double dt, Grid& G, std::vector<Rigid
           work += dp.dot(vr);
           // Frictional work = friction impulse x the slip that goes on (Coulomb force times slip
           // distance); sticking does no frictional work. It becomes heat in the deformable body at
-          // this node (a rigid tool takes none). The rest of the kinetic energy the correction
+          // this node, all of it or the body's friction_heat_share (the rest flows into the rigid body,
+          // which is not thermally modelled). The other kinetic energy the correction
           // removes at the node is the velocity jump of imposing contact on the grid; with FLIP
           // it is not lost by the particles, so it is not counted as a dissipation (counting it
           // overstated friction heat and broke the energy balance of a cut by ~15%).
           const double q = m * cc.friction_dv * cc.slip_after;
           friction_work += q;
-          G.friction_heat[n] += q;
+          G.friction_heat[n] += heat_share_[r] * q;
           if (q > 0.0) heated_.add(i, j);
         }
       }

@@ -88,6 +88,7 @@ class RigidContact {
  private:
   std::vector<RigidPolygon> geometry_;  // outlines at t = 0; current = outline + displacement
   std::vector<double> friction_;        // Coulomb coefficient per body
+  std::vector<double> heat_share_;      // share of the frictional work that heats the material, per body
   bool has_friction_ = false;
   RigidContactSettings settings_;
   std::vector<std::vector<double>> weight_;  // particle detection: per body, per node: sum S m phi, kg/m

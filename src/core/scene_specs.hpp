@@ -67,6 +67,9 @@ struct RigidBodySpec {
   double rounding_radius = 0.0;  // m
   Vec2 velocity = Vec2::Zero();  // prescribed, m/s
   double friction = 0.0;         // Coulomb coefficient against deformable bodies, -
+  // Share of the frictional work at this body that heats the deformable body; the rest flows into
+  // this body, which is not thermally modelled (a heat sink at its own temperature), -
+  double friction_heat_share = 1.0;
 
   bool operator==(const RigidBodySpec&) const = default;  // field-wise, for round-trip tests
 };

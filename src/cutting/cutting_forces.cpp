@@ -178,6 +178,7 @@ void CuttingForcesObserver::at_finish(const Simulation& sim, nlohmann::json& sum
                            {"clearance_angle_deg", c_.clearance_angle_deg},
                            {"edge_radius_m", c_.edge_radius},
                            {"friction", c_.friction},
+                           {"friction_heat_share", c_.friction_heat_share},
                            {"initial_temperature_K", c_.initial_temperature},
                            {"cell_size_m", sim.grid().h},
                            {"particles_per_cell", c_.particles_per_cell}};

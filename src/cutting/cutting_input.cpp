@@ -40,6 +40,8 @@ CuttingParameters read_cutting_parameters(TableReader& t) {
   c.tool_length = t.number("tool_length", c.tool_length, Range::closed(0.0, 1.0, "m", "0 = automatic"));
   c.tool_height = t.number("tool_height", c.tool_height, Range::closed(0.0, 1.0, "m", "0 = automatic"));
   c.friction = t.number("friction", c.friction, Range::closed(0.0, 2.0, "", "Coulomb coefficient"));
+  c.friction_heat_share = t.number("friction_heat_share", c.friction_heat_share,
+                                   Range::closed(0.0, 1.0, "", "share of the frictional heat into the workpiece"));
   // Also below the workpiece material's melting point: checked once the material is known.
   c.initial_temperature = t.number("initial_temperature", c.initial_temperature, Range::open(0.0, 1e4, "K"));
   c.cell_size = t.number("cell_size", c.cell_size);
@@ -86,6 +88,8 @@ void write_cutting_parameters(const CuttingParameters& c, std::ostream& out, std
   out << "tool_length = " << num(c.tool_length) << "  # m (0 = automatic)\n";
   out << "tool_height = " << num(c.tool_height) << "  # m (0 = automatic)\n";
   out << "friction = " << num(c.friction) << "\n";
+  // Only where it is not the default: case files written before the key stay byte-identical.
+  if (c.friction_heat_share != 1.0) out << "friction_heat_share = " << num(c.friction_heat_share) << "\n";
   out << "initial_temperature = " << num(c.initial_temperature) << "  # K\n";
   out << "cell_size = " << num(c.cell_size) << "  # m (0 = t0/10)\n";
   out << "particles_per_cell = " << c.particles_per_cell << "\n";

@@ -19,6 +19,7 @@ struct CuttingParameters {
   double tool_length = 0.0;          // along the machined surface, m; 0 = max(3 t0, 0.3 mm)
   double tool_height = 0.0;          // above the cutting edge, m; 0 = max(4 t0, 0.4 mm)
   double friction = 0.35;            // Coulomb mu, tool-chip, -
+  double friction_heat_share = 1.0;  // share of the frictional heat that goes into the workpiece (rest: tool), -
   double initial_temperature = 298.0;// K
   double cell_size = 0.0;            // h, m; 0 = t0 / 10
   int particles_per_cell = 2;        // per direction

@@ -61,6 +61,7 @@ RigidBodySpec make_cutting_tool(const CuttingParameters& c, const ToolPlacement&
   tool.rounding_radius = r;
   tool.velocity = Vec2(-c.cutting_speed, 0.0);
   tool.friction = c.friction;
+  tool.friction_heat_share = c.friction_heat_share;
   return tool;
 }
 

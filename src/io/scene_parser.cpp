@@ -368,6 +368,8 @@ RigidBodySpec read_rigid_body(TableReader t) {
   r.rounding_radius = t.number("rounding_radius", r.rounding_radius, Range::closed(0.0, 1.0, "m"));
   r.velocity = t.vec2("velocity", r.velocity, kSpeedComponent);
   r.friction = t.number("friction", r.friction, Range::closed(0.0, 2.0, "", "Coulomb coefficient"));
+  r.friction_heat_share = t.number("friction_heat_share", r.friction_heat_share,
+                                   Range::closed(0.0, 1.0, "", "share of the frictional heat into the deformable body"));
   t.reject_unknown_keys();
   return r;
 }

@@ -143,6 +143,9 @@ void write_scene_tables(const Scene& s, std::ostream& out) {
     out << "rounding_radius = " << num(r.rounding_radius) << "\n";
     out << "velocity = " << vec(r.velocity) << "\n";
     out << "friction = " << num(r.friction) << "\n";
+    // Written only where it is not the default, so that scenes written before the key existed stay
+    // byte-identical (run records are matched by their scene text).
+    if (r.friction_heat_share != 1.0) out << "friction_heat_share = " << num(r.friction_heat_share) << "\n";
   }
 }
 

@@ -152,6 +152,9 @@ std::string condition_case_text(const CuttingCondition& c, const ConditionRunSet
   s += fmt::format("edge_radius = {}  # {}\n", c.edge_radius_um * 1e-6,
                    c.kind == "forces" ? "measured mean r_n of the tests" : "preset default: not stated in the source");
   s += fmt::format("friction = {}  # {}\n", o.friction, o.friction_note);
+  if (o.friction_heat_share)
+    s += fmt::format("friction_heat_share = {}  # chosen with --friction-heat-share (the rest flows into the tool)\n",
+                     *o.friction_heat_share);
   s += fmt::format("cell_size = {}  # {}\n", cell,
                    o.quick ? "quick: t0/4 (pipeline check, not converged)"
                            : fmt::format("min(t0/N, r_n/M), N = {} cells across t0, M = {:g} across r_n: {:.3g} and {:.3g} "

@@ -73,6 +73,9 @@ struct ConditionRunSettings {
   std::vector<std::pair<std::string, double>> material_overrides;
   double friction = 0.35;   // Coulomb coefficient at the tool
   std::string friction_note = "ASSUMPTION: preset default Coulomb coefficient";
+  // Share of the frictional heat that goes into the workpiece; none: the preset's (all of it), and the
+  // case text stays that of the runs before the option (their records match).
+  std::optional<double> friction_heat_share;
   int snapshots = 0;        // VTU snapshots of each run; 0: 2 with quick, else 20
 };
 

@@ -183,6 +183,45 @@ TEST(RigidContact, FrictionalWorkEqualsKineticEnergyLost) {
   EXPECT_NEAR(e.heat, e.friction, 1e-12 * e.friction);  // frictional work becomes heat
 }
 
+// friction_heat_share: only that share of the frictional work heats the block (the rest flows into
+// the plane), and the mechanics do not change. Same slide as above at shares 1, 0.25 and 0: the heat
+// is share x friction work to rounding, the friction work and the final momentum are those of share 1
+// to the last bit (the share enters nothing but the heat). A share applied twice, or to the friction
+// work instead of the heat, fails the first check; one that leaks into the contact law, the second.
+TEST(RigidContact, FrictionHeatShareSplitsTheHeatNotTheWork) {
+  const double h = 0.02, g = 10.0, mu = 0.3, v0 = 2.0;
+  double friction_all = 0.0, momentum_all = 0.0;
+  for (double share : {1.0, 0.25, 0.0}) {
+    SCOPED_TRACE(::testing::Message() << "share " << share);
+    Scene s;
+    s.grid = {h, Vec2(0, 0), Vec2(2.0, 0.4)};
+    s.solver.cfl = 0.4;
+    s.body_force = Vec2(0.0, -g);
+    MaterialParameters m = elastic_material("rubber", 1e6, 0.3, 1000.0);
+    m.specific_heat = 1000.0;  // heats by micro-kelvins: no melting cap
+    s.materials.push_back(m);
+    s.bodies.push_back(rectangle_body("block", "rubber", Vec2(0.1, 0.1), Vec2(0.3, 0.2), 2, Vec2(v0, 0)));
+    RigidBodySpec plane;
+    plane.name = "plane";
+    plane.polygon = box(Vec2(-0.1, -0.1), Vec2(2.1, 0.1));
+    plane.friction = mu;
+    plane.friction_heat_share = share;
+    s.rigid_bodies.push_back(plane);
+    Simulation sim(s);
+    while (sim.time() < 0.2) sim.step();
+    const EnergyTotals& e = sim.energy();
+    ASSERT_GT(e.friction, 0.0);
+    EXPECT_NEAR(e.heat, share * e.friction, 1e-9 * e.friction);
+    if (share == 1.0) {
+      friction_all = e.friction;
+      momentum_all = sim.total_momentum().x();
+    } else {
+      EXPECT_EQ(e.friction, friction_all);
+      EXPECT_EQ(sim.total_momentum().x(), momentum_all);
+    }
+  }
+}
+
 // Frictional heating cannot take the surface beyond the melting temperature (a molten film
 // carries no shear); the excess counts as heat flowing into the rigid body.
 TEST(RigidContact, FrictionalHeatingStopsAtMelting) {

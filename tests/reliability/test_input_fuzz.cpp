@@ -48,9 +48,11 @@ const std::vector<std::pair<std::string, std::string>> kAllowed = {
     {"cutting.rake_angle_deg", "-1"},
     {"cutting.edge_radius", "0"},  // a sharp tool
     {"cutting.friction", "0"},     // frictionless
+    {"cutting.friction_heat_share", "0"},  // all frictional heat into the tool
     {"cutting.steady_start_fraction", "0"},
     {"rounding_radius", "0"},
     {"friction", "0"},
+    {"friction_heat_share", "0"},
     {"vtu", "true"},
     {"jc_C", "0"}, {"jc_n", "0"}, {"jc_A", "0"}, {"jc_B", "0"},  // Johnson-Cook terms switched off
     {"jc_D1", "0"}, {"jc_D2", "0"}, {"jc_D3", "0"}, {"jc_D4", "0"}, {"jc_D5", "0"},

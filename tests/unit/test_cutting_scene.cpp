@@ -45,5 +45,23 @@ TEST(CuttingScene, MachinedSurfaceLiesOnANodeRowOnEveryGrid) {
   EXPECT_EQ(machined_surface_on_node_row(0.4e-3, 0.1e-3, 0.1e-3 / 24.0), 0.4e-3);
 }
 
+// The tool of the preset carries the process's friction and frictional-heat share.
+TEST(CuttingScene, ToolCarriesFrictionAndFrictionHeatShare) {
+  MaterialParameters m;
+  m.name = "ti";
+  CuttingParameters c;
+  c.cutting_speed = 2.0;
+  c.uncut_chip_thickness = 0.1e-3;
+  c.cut_length = 0.2e-3;
+  c.friction = 0.2;
+  c.friction_heat_share = 0.4;
+  const Scene s = build_cutting_scene(c, m);
+  ASSERT_EQ(s.rigid_bodies.size(), 1u);
+  EXPECT_EQ(s.rigid_bodies[0].friction, 0.2);
+  EXPECT_EQ(s.rigid_bodies[0].friction_heat_share, 0.4);
+  c.friction_heat_share = CuttingParameters{}.friction_heat_share;  // the default: all of it
+  EXPECT_EQ(build_cutting_scene(c, m).rigid_bodies[0].friction_heat_share, 1.0);
+}
+
 }  // namespace
 }  // namespace mpmcut

@@ -273,6 +273,8 @@ TEST(SceneValidation, RangesOfSolverAndThermal) {
   expect_error(edit("end_time = 1.0", "end_time = -1.0"), "end_time", {"key 'solver.end_time'", "must be in (0, 1000] s"});
   expect_error(kBase + "[[rigid_body]]\nname = \"tool\"\npolygon = [[0, 0], [1, 0], [0, 1]]\nfriction = -0.1\n",
                "friction", {"key 'rigid_body[0].friction'", "must be in [0, 2]"});
+  expect_error(kBase + "[[rigid_body]]\nname = \"tool\"\npolygon = [[0, 0], [1, 0], [0, 1]]\nfriction_heat_share = 1.5\n",
+               "friction_heat_share", {"key 'rigid_body[0].friction_heat_share'", "must be in [0, 1]"});
   expect_error(edit("[solver]", "[thermal]\nleft = -5.0\n[solver]"), "left = -5", {"key 'thermal.left'", "must be in (0, 10000] K"});
   expect_error(edit("rectangle =", "temperature = 0\nrectangle ="), "temperature", {"key 'body[0].temperature'"});
 }
@@ -497,6 +499,7 @@ name = "tool"
 polygon = [[1.0, 0.0], [2.0, 0.0], [2.0, 1.0]]
 velocity = [-1.0, 0.0]
 friction = 0.35
+friction_heat_share = 0.4
 rounding_radius = 0.05
 )";
   const Scene s = parse_scene(text, "case.toml",
