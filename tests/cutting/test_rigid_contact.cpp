@@ -154,22 +154,33 @@ TEST(RigidContact, PushingConservesMomentumAndEnergy) {
   EXPECT_NEAR(sim.energy().external_work, stored, 0.05 * stored);
 }
 
-// A block sliding at 2 m/s on a rough plane stops by friction: the frictional work (Coulomb
-// force x slip) accounts for the kinetic energy it loses, and its deceleration is mu g.
-TEST(RigidContact, FrictionalWorkEqualsKineticEnergyLost) {
-  const double h = 0.02, g = 10.0, mu = 0.3, v0 = 2.0;
+// A block (0.2 m x 0.1 m, material m) sliding at v0 = 2 m/s along a plane with friction mu, under
+// gravity g = 10 m/s^2 pressing it on the plane; the plane sends friction_heat_share of the frictional
+// heat into the block.
+constexpr double kSlideG = 10.0, kSlideV0 = 2.0;
+Scene sliding_block(const MaterialParameters& m, double mu, double friction_heat_share = 1.0) {
   Scene s;
-  s.grid = {h, Vec2(0, 0), Vec2(2.0, 0.4)};
+  s.grid = {0.02, Vec2(0, 0), Vec2(2.0, 0.4)};
   s.solver.cfl = 0.4;
-  s.body_force = Vec2(0.0, -g);
-  s.materials.push_back(elastic_material("rubber", 1e6, 0.3, 1000.0));
-  s.bodies.push_back(rectangle_body("block", "rubber", Vec2(0.1, 0.1), Vec2(0.3, 0.2), 2, Vec2(v0, 0)));
+  s.body_force = Vec2(0.0, -kSlideG);
+  s.materials.push_back(m);
+  BodySpec b = rectangle_body("block", m.name, Vec2(0.1, 0.1), Vec2(0.3, 0.2), 2, Vec2(kSlideV0, 0));
+  b.temperature = m.room_temperature;
+  s.bodies.push_back(b);
   RigidBodySpec plane;
   plane.name = "plane";
   plane.polygon = box(Vec2(-0.1, -0.1), Vec2(2.1, 0.1));
   plane.friction = mu;
+  plane.friction_heat_share = friction_heat_share;
   s.rigid_bodies.push_back(plane);
-  Simulation sim(s);
+  return s;
+}
+
+// The block stops by friction: the frictional work (Coulomb force x slip) accounts for the kinetic
+// energy it loses, and its deceleration is mu g.
+TEST(RigidContact, FrictionalWorkEqualsKineticEnergyLost) {
+  const double mu = 0.3;
+  Simulation sim(sliding_block(elastic_material("rubber", 1e6, 0.3, 1000.0), mu));
   sim.refresh_energy();
   const double E0 = sim.energy().kinetic;
   double M = 0.0;
@@ -179,35 +190,21 @@ TEST(RigidContact, FrictionalWorkEqualsKineticEnergyLost) {
   const EnergyTotals& e = sim.energy();
   const double lost = E0 - e.kinetic;
   EXPECT_NEAR(e.friction + e.elastic - e.external_work, lost, 0.01 * lost);
-  EXPECT_NEAR(sim.total_momentum().x() / M, v0 - mu * g * sim.time(), 0.02 * v0);
+  EXPECT_NEAR(sim.total_momentum().x() / M, kSlideV0 - mu * kSlideG * sim.time(), 0.02 * kSlideV0);
   EXPECT_NEAR(e.heat, e.friction, 1e-12 * e.friction);  // frictional work becomes heat
 }
 
 // friction_heat_share: only that share of the frictional work heats the block (the rest flows into
-// the plane), and the mechanics do not change. Same slide as above at shares 1, 0.25 and 0: the heat
-// is share x friction work to rounding, the friction work and the final momentum are those of share 1
+// the plane), and the mechanics do not change. The same slide at shares 1, 0.25 and 0: the heat is
+// share x friction work to rounding, the friction work and the final momentum are those of share 1
 // to the last bit (the share enters nothing but the heat). A share applied twice, or to the friction
 // work instead of the heat, fails the first check; one that leaks into the contact law, the second.
 TEST(RigidContact, FrictionHeatShareSplitsTheHeatNotTheWork) {
-  const double h = 0.02, g = 10.0, mu = 0.3, v0 = 2.0;
+  const MaterialParameters m = elastic_material("rubber", 1e6, 0.3, 1000.0);  // no melting point: no cap
   double friction_all = 0.0, momentum_all = 0.0;
   for (double share : {1.0, 0.25, 0.0}) {
     SCOPED_TRACE(::testing::Message() << "share " << share);
-    Scene s;
-    s.grid = {h, Vec2(0, 0), Vec2(2.0, 0.4)};
-    s.solver.cfl = 0.4;
-    s.body_force = Vec2(0.0, -g);
-    MaterialParameters m = elastic_material("rubber", 1e6, 0.3, 1000.0);
-    m.specific_heat = 1000.0;  // heats by micro-kelvins: no melting cap
-    s.materials.push_back(m);
-    s.bodies.push_back(rectangle_body("block", "rubber", Vec2(0.1, 0.1), Vec2(0.3, 0.2), 2, Vec2(v0, 0)));
-    RigidBodySpec plane;
-    plane.name = "plane";
-    plane.polygon = box(Vec2(-0.1, -0.1), Vec2(2.1, 0.1));
-    plane.friction = mu;
-    plane.friction_heat_share = share;
-    s.rigid_bodies.push_back(plane);
-    Simulation sim(s);
+    Simulation sim(sliding_block(m, 0.3, share));
     while (sim.time() < 0.2) sim.step();
     const EnergyTotals& e = sim.energy();
     ASSERT_GT(e.friction, 0.0);
@@ -225,24 +222,11 @@ TEST(RigidContact, FrictionHeatShareSplitsTheHeatNotTheWork) {
 // Frictional heating cannot take the surface beyond the melting temperature (a molten film
 // carries no shear); the excess counts as heat flowing into the rigid body.
 TEST(RigidContact, FrictionalHeatingStopsAtMelting) {
-  const double h = 0.02, g = 10.0, mu = 0.3, v0 = 2.0;
-  Scene s;
-  s.grid = {h, Vec2(0, 0), Vec2(2.0, 0.4)};
-  s.body_force = Vec2(0.0, -g);
-  MaterialParameters m = mpmcut::testing::elastic_material("rubber", 1e6, 0.3, 1000.0);
+  MaterialParameters m = elastic_material("rubber", 1e6, 0.3, 1000.0);
   m.specific_heat = 0.01;          // tiny heat capacity: friction alone would heat it by kelvins
   m.room_temperature = 298.0;
   m.melting_temperature = 300.0;
-  s.materials.push_back(m);
-  BodySpec b = mpmcut::testing::rectangle_body("block", "rubber", Vec2(0.1, 0.1), Vec2(0.3, 0.2), 2, Vec2(v0, 0));
-  b.temperature = 298.0;
-  s.bodies.push_back(b);
-  RigidBodySpec plane;
-  plane.name = "plane";
-  plane.polygon = box(Vec2(-0.1, -0.1), Vec2(2.1, 0.1));
-  plane.friction = mu;
-  s.rigid_bodies.push_back(plane);
-  Simulation sim(s);
+  Simulation sim(sliding_block(m, 0.3));
   while (sim.time() < 0.3) sim.step();
   EXPECT_LE(sim.max_temperature(), 300.0);
   EXPECT_GT(sim.max_temperature(), 299.9);  // it did heat up to the cap
