@@ -102,6 +102,7 @@ struct ValidateOptions {
   std::string material;         // a library set; empty: the default (ti64-cutting)
   std::optional<double> friction;  // Coulomb coefficient; none: the default (0.35)
   std::optional<double> friction_heat_share;  // none: the preset's (all frictional heat into the workpiece)
+  std::optional<double> tool_heat_transfer_coefficient, tool_temperature;  // none: an adiabatic tool
 };
 
 ConditionRunSettings run_settings(const ValidateOptions& o) {
@@ -118,6 +119,8 @@ ConditionRunSettings run_settings(const ValidateOptions& o) {
     s.friction_note = "chosen with --friction";
   }
   s.friction_heat_share = o.friction_heat_share;
+  s.tool_heat_transfer_coefficient = o.tool_heat_transfer_coefficient;
+  s.tool_temperature = o.tool_temperature;
   return s;
 }
 
@@ -675,7 +678,13 @@ int run_validation(const ValidateOptions& o) {
               ? fmt::format("; a share {:g} of the frictional heat goes into the workpiece, the rest into the tool "
                             "(--friction-heat-share)",
                             *settings.friction_heat_share)
-              : std::string("; all frictional heat goes into the workpiece (the tool is not thermally modelled)"))
+              : std::string("; all frictional heat goes into the workpiece"))
+      << (settings.tool_heat_transfer_coefficient
+              ? fmt::format("; the tool is a heat sink at {} with a heat transfer coefficient of {:g} W/(m² K)",
+                            settings.tool_temperature ? fmt::format("{:g} K", *settings.tool_temperature)
+                                                      : std::string("the initial temperature"),
+                            *settings.tool_heat_transfer_coefficient)
+              : std::string("; the tool surface is adiabatic"))
       << ".\n"
       << "- Material: the `" << settings.material << "` set of the material library ("
       << settings.material_note << ")"
@@ -799,10 +808,27 @@ void add_validate_command(CLI::App& app) {
       });
   v->add_option("--friction", o->friction, "Coulomb coefficient at the tool (default 0.35; e.g. a calibrated one)")
       ->check(CLI::Range(0.0, 2.0));
-  v->add_option("--friction-heat-share", o->friction_heat_share,
-                "Share of the frictional heat that goes into the workpiece, the rest into the tool (default 1: all "
-                "of it; [cutting] friction_heat_share)")
-      ->check(CLI::Range(0.0, 1.0));
+  // The tool's thermal options: bounded numbers that, when given, go into every case file.
+  struct ThermalOption {
+    const char* name;
+    std::optional<double>* value;
+    const char* help;
+    double lo, hi;
+  };
+  for (const ThermalOption& t : {
+           ThermalOption{"--friction-heat-share", &o->friction_heat_share,
+                         "Share of the frictional heat that goes into the workpiece, the rest into the tool (default 1: "
+                         "all of it; [cutting] friction_heat_share)",
+                         0.0, 1.0},
+           ThermalOption{"--tool-heat-transfer-coefficient", &o->tool_heat_transfer_coefficient,
+                         "Heat transfer coefficient between the workpiece and the tool, W/(m^2 K) (default 0: an "
+                         "adiabatic tool; [cutting] tool_heat_transfer_coefficient)",
+                         0.0, 1e9},
+           ThermalOption{"--tool-temperature", &o->tool_temperature,
+                         "The tool's constant temperature, K, where it exchanges heat (default: the workpiece's "
+                         "initial temperature)",
+                         1.0, 1e4}})
+    v->add_option(t.name, *t.value, t.help)->check(CLI::Range(t.lo, t.hi));
   v->callback([o]() {
     int code = 0;
     try {

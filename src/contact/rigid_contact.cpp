@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "contact/particles_near_body.hpp"
 #include "core/stencil.hpp"
 
 namespace mpmcut {
@@ -20,22 +21,14 @@ void book_contact_impulse(RigidBodyState& body, const Vec2& impulse, double work
   energy.external_work += work;
 }
 
-// Calls visit(p, x, shape, d, normal) for each particle p within two cells of the rigid body's bounding box,
-// with its signed distance d from the body's outline (shifted by `shift`) and the outward normal there.
-template <class Visit>
-void for_each_particle_near(const Particles& P, const Grid& G, std::span<const ShapeFunction> body_shapes,
-                            const RigidPolygon& geom, const Vec2& shift, Visit&& visit) {
-  const Vec2 lo = geom.lower() + shift - Vec2::Constant(2.0 * G.h), hi = geom.upper() + shift + Vec2::Constant(2.0 * G.h);
-  for (std::size_t p = 0; p < P.size(); ++p) {
-    const Vec2 x = P.position[p];
-    if (x.x() < lo.x() || x.x() > hi.x() || x.y() < lo.y() || x.y() > hi.y()) continue;
-    Vec2 normal;
-    const double d = geom.signed_distance(x - shift, normal);
-    visit(p, x, body_shapes[P.body[p]], d, normal);
-  }
-}
-
 }  // namespace
+
+NodeRange nodes_near_body(const RigidPolygon& geom, const Vec2& shift, const Grid& G) {
+  const Vec2 lo = (geom.lower() + shift - G.origin) / G.h - Vec2::Constant(2.0);
+  const Vec2 hi = (geom.upper() + shift - G.origin) / G.h + Vec2::Constant(2.0);
+  return {std::max(0, static_cast<int>(std::floor(lo.x()))), std::min(G.nx - 1, static_cast<int>(std::ceil(hi.x()))),
+          std::max(0, static_cast<int>(std::floor(lo.y()))), std::min(G.ny - 1, static_cast<int>(std::ceil(hi.y())))};
+}
 
 RigidContact::RigidContact(const std::vector<RigidBodySpec>& bodies, const RigidContactSettings& settings)
     : settings_(settings) {
@@ -135,12 +128,7 @@ void RigidContact::apply(ContactPass pass, double dt, Grid& G, std::vector<Rigid
     const Vec2 vr = bodies[r].velocity;
     const double mu = friction_[r];
     // Only nodes near the rigid body's bounding box can be in contact.
-    const Vec2 lo = (geom.lower() + shift - G.origin) / G.h - Vec2::Constant(2.0);
-    const Vec2 hi = (geom.upper() + shift - G.origin) / G.h + Vec2::Constant(2.0);
-    const int i0 = std::max(0, static_cast<int>(std::floor(lo.x())));
-    const int i1 = std::min(G.nx - 1, static_cast<int>(std::ceil(hi.x())));
-    const int j0 = std::max(0, static_cast<int>(std::floor(lo.y())));
-    const int j1 = std::min(G.ny - 1, static_cast<int>(std::ceil(hi.y())));
+    const auto [i0, i1, j0, j1] = nodes_near_body(geom, shift, G);
     Vec2 impulse = Vec2::Zero();
     double work = 0.0, friction_work = 0.0;
     // Nodes in a fixed order: deterministic sums.

@@ -36,6 +36,13 @@ struct NodeBox {
   }
 };
 
+// The grid nodes (i0..i1, j0..j1) that can touch a rigid body: its bounding box, displaced by shift,
+// plus two cells, clipped to the grid.
+struct NodeRange {
+  int i0, i1, j0, j1;
+};
+NodeRange nodes_near_body(const RigidPolygon& geom, const Vec2& shift, const Grid& grid);
+
 struct RigidContactSettings {
   double contact_distance = 0.0;    // m: a node's material within this of the surface can be in contact
   ContactDetection detection = ContactDetection::Node;

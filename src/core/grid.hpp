@@ -30,6 +30,11 @@ struct Grid {
   std::vector<double> temperature;     // K
   std::vector<double> heat_rate;       // W/m
   std::vector<double> friction_heat;   // J/m, frictional work at rigid contacts this step
+  // Heat sinks of the conduction update (rigid bodies with a heat transfer coefficient): conductance
+  // to the body, W/(K m), and its temperature, K. Filled by mark_heat_sinks (contact/rigid_heat_transfer)
+  // on the steps that conduct; empty when no rigid body exchanges heat.
+  std::vector<double> sink_conductance;
+  std::vector<double> sink_temperature;
   // Boundary flags: bit 0 = x velocity fixed, bit 1 = y velocity fixed; bits 2.. = fixed temperature
   std::vector<std::uint8_t> in_contact;  // 1 where rigid contact acted after the momentum update
   std::vector<std::uint8_t> fixed;

@@ -70,6 +70,10 @@ struct RigidBodySpec {
   // Share of the frictional work at this body that heats the deformable body; the rest flows into
   // this body, which is not thermally modelled (a heat sink at its own temperature), -
   double friction_heat_share = 1.0;
+  // Heat transfer coefficient between this body's surface and the deformable material in contact with
+  // it, W/(m^2 K); 0 = an adiabatic surface. The body itself stays at `temperature` (a heat sink).
+  double heat_transfer_coefficient = 0.0;
+  double temperature = 298.0;  // K, uniform and constant; used where heat_transfer_coefficient > 0
 
   bool operator==(const RigidBodySpec&) const = default;  // field-wise, for round-trip tests
 };

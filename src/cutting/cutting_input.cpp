@@ -50,6 +50,14 @@ CuttingParameters read_cutting_parameters(TableReader& t) {
   c.particles_per_cell =
       static_cast<int>(t.integer("particles_per_cell", c.particles_per_cell, Range::closed(1, 4, "per direction")));
   c.conduction = t.boolean("conduction", c.conduction);
+  c.tool_heat_transfer_coefficient =
+      t.number("tool_heat_transfer_coefficient", c.tool_heat_transfer_coefficient,
+               Range::closed(0.0, 1e9, "W/(m^2 K)", "0 = adiabatic tool surface"));
+  if (c.tool_heat_transfer_coefficient > 0.0)
+    t.check("tool_heat_transfer_coefficient", c.conduction, "0 unless conduction = true",
+            c.tool_heat_transfer_coefficient);
+  // The tool starts, and stays, at the workpiece's initial temperature unless told otherwise.
+  c.tool_temperature = t.number("tool_temperature", c.initial_temperature, Range::open(0.0, 1e4, "K"));
   c.chip_room = t.number("chip_room", c.chip_room, Range::closed(0.0, 1.0, "m", "0 = automatic"));
   c.snapshots = static_cast<int>(t.integer("snapshots", c.snapshots, Range::closed(1, 10000)));
   if (const toml::node* n = t.node("mass_scaling")) {
@@ -94,6 +102,10 @@ void write_cutting_parameters(const CuttingParameters& c, std::ostream& out, std
   out << "cell_size = " << num(c.cell_size) << "  # m (0 = t0/10)\n";
   out << "particles_per_cell = " << c.particles_per_cell << "\n";
   out << "conduction = " << (c.conduction ? "true" : "false") << "\n";
+  // Only where they are not the defaults: case files written before the keys stay byte-identical.
+  if (c.tool_heat_transfer_coefficient != 0.0)
+    out << "tool_heat_transfer_coefficient = " << num(c.tool_heat_transfer_coefficient) << "  # W/(m^2 K)\n";
+  if (c.tool_temperature != c.initial_temperature) out << "tool_temperature = " << num(c.tool_temperature) << "  # K\n";
   out << "chip_room = " << num(c.chip_room) << "  # m (0 = automatic)\n";
   out << "snapshots = " << c.snapshots << "\n";
   if (c.mass_scaling == 0.0) out << "mass_scaling = \"auto\"\n";

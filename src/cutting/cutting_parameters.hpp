@@ -20,6 +20,8 @@ struct CuttingParameters {
   double tool_height = 0.0;          // above the cutting edge, m; 0 = max(4 t0, 0.4 mm)
   double friction = 0.35;            // Coulomb mu, tool-chip, -
   double friction_heat_share = 1.0;  // share of the frictional heat that goes into the workpiece (rest: tool), -
+  double tool_heat_transfer_coefficient = 0.0;  // W/(m^2 K) tool-workpiece; 0 = adiabatic tool surface
+  double tool_temperature = 298.0;   // K, the tool's (uniform, constant); [cutting] default: initial_temperature
   double initial_temperature = 298.0;// K
   double cell_size = 0.0;            // h, m; 0 = t0 / 10
   int particles_per_cell = 2;        // per direction

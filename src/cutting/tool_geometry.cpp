@@ -62,6 +62,8 @@ RigidBodySpec make_cutting_tool(const CuttingParameters& c, const ToolPlacement&
   tool.velocity = Vec2(-c.cutting_speed, 0.0);
   tool.friction = c.friction;
   tool.friction_heat_share = c.friction_heat_share;
+  tool.heat_transfer_coefficient = c.tool_heat_transfer_coefficient;
+  tool.temperature = c.tool_temperature;
   return tool;
 }
 

@@ -358,7 +358,7 @@ BodySpec read_body(TableReader t, const Scene& scene) {
   return b;
 }
 
-RigidBodySpec read_rigid_body(TableReader t) {
+RigidBodySpec read_rigid_body(TableReader t, bool conduction) {
   RigidBodySpec r;
   t.require_key("name", "identifies the rigid body in outputs (forces)");
   t.require_key("polygon", "outline [[x, y], ...] at t = 0, m");
@@ -370,6 +370,13 @@ RigidBodySpec read_rigid_body(TableReader t) {
   r.friction = t.number("friction", r.friction, Range::closed(0.0, 2.0, "", "Coulomb coefficient"));
   r.friction_heat_share = t.number("friction_heat_share", r.friction_heat_share,
                                    Range::closed(0.0, 1.0, "", "share of the frictional heat into the deformable body"));
+  r.heat_transfer_coefficient = t.number("heat_transfer_coefficient", r.heat_transfer_coefficient,
+                                         Range::closed(0.0, 1e9, "W/(m^2 K)", "0 = adiabatic surface"));
+  r.temperature = t.number("temperature", r.temperature, Range::open_closed(0.0, kMaxTemperature, "K"));
+  if (r.heat_transfer_coefficient > 0.0)
+    t.check("heat_transfer_coefficient", conduction,
+            "0 unless thermal.conduction = true (the heat it takes is part of the conduction update)",
+            r.heat_transfer_coefficient);
   t.reject_unknown_keys();
   return r;
 }
@@ -418,7 +425,7 @@ Scene read_scene_tables(TableReader& top) {
     top.fail_table("no [[body]] entries: a scene needs at least one deformable body");
   }
   for (TableReader& t : top.array_of_tables("rigid_body")) {
-    scene.rigid_bodies.push_back(read_rigid_body(t));
+    scene.rigid_bodies.push_back(read_rigid_body(t, scene.thermal.conduction));
     claim_name(t, scene.rigid_bodies.back().name);
   }
   return scene;

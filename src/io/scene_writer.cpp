@@ -146,6 +146,9 @@ void write_scene_tables(const Scene& s, std::ostream& out) {
     // Written only where it is not the default, so that scenes written before the key existed stay
     // byte-identical (run records are matched by their scene text).
     if (r.friction_heat_share != 1.0) out << "friction_heat_share = " << num(r.friction_heat_share) << "\n";
+    if (r.heat_transfer_coefficient != 0.0)
+      out << "heat_transfer_coefficient = " << num(r.heat_transfer_coefficient) << "\n";
+    if (r.temperature != RigidBodySpec{}.temperature) out << "temperature = " << num(r.temperature) << "\n";
   }
 }
 

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "contact/frictional_heating.hpp"
+#include "contact/rigid_heat_transfer.hpp"
 #include "core/cell_order.hpp"
 #include "core/deterministic_sum.hpp"
 #include "solver/grid_update.hpp"
@@ -46,6 +47,7 @@ Simulation::Simulation(const Scene& scene) : scene_(scene) {
   contact.detection = scene_.solver.contact_detection;
   contact.node_mass_cutoff = node_mass_cutoff_;
   contact_ = RigidContact(scene_.rigid_bodies, contact);
+  heat_transfer_ = any_heat_transfer(scene_.rigid_bodies);
   mark_boundary_nodes(scene_.boundaries, scene_.thermal, grid_);
   refresh_energy();
   state_.energy.initial = state_.energy.kinetic + state_.energy.elastic;
@@ -173,8 +175,13 @@ void Simulation::heat_particles(double dt) {
   if (contact_.has_friction())
     state_.energy.heat += deposit_frictional_heat(particles_, grid_, shapes_, scene_.materials, contact_.heated_nodes(),
                                                   deposited_heat_, parallel_);
-  if (const auto elapsed = conduction_.end_step(state_.conduction, dt, conduct_now_))
+  if (const auto elapsed = conduction_.end_step(state_.conduction, dt, conduct_now_)) {
+    // Rigid bodies with a heat transfer coefficient are heat sinks on their surface nodes. The heat
+    // that flows into them leaves the material; like the heat through fixed-temperature boundaries it
+    // is not part of the mechanical energy ledger.
+    if (heat_transfer_) mark_heat_sinks(grid_, scene_.rigid_bodies, contact_, state_.rigid_bodies);
     conduct_heat(particles_, grid_, shapes_, scene_.materials, colouring_, parallel_, *elapsed);
+  }
 }
 
 void Simulation::advance_clock(double dt) {

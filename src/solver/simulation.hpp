@@ -91,6 +91,7 @@ class Simulation {
   std::vector<ShapeFunction> shapes_;  // one per body (uGIMP lp depends on its particles per cell)
   std::vector<std::unique_ptr<Material>> materials_;
   RigidContact contact_;
+  bool heat_transfer_ = false;  // a rigid body exchanges heat with the material (conduction steps)
   SubcycledConduction conduction_;
   double node_mass_cutoff_ = 0.0;  // nodes lighter than this count as empty, kg/m
   double inertia_factor_ = 1.0;    // mass scaling f: inertial mass = f x mass

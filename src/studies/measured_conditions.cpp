@@ -155,6 +155,11 @@ std::string condition_case_text(const CuttingCondition& c, const ConditionRunSet
   if (o.friction_heat_share)
     s += fmt::format("friction_heat_share = {}  # chosen with --friction-heat-share (the rest flows into the tool)\n",
                      *o.friction_heat_share);
+  if (o.tool_heat_transfer_coefficient)
+    s += fmt::format("tool_heat_transfer_coefficient = {}  # W/(m^2 K), chosen with --tool-heat-transfer-coefficient\n",
+                     *o.tool_heat_transfer_coefficient);
+  if (o.tool_temperature)
+    s += fmt::format("tool_temperature = {}  # K, chosen with --tool-temperature\n", *o.tool_temperature);
   s += fmt::format("cell_size = {}  # {}\n", cell,
                    o.quick ? "quick: t0/4 (pipeline check, not converged)"
                            : fmt::format("min(t0/N, r_n/M), N = {} cells across t0, M = {:g} across r_n: {:.3g} and {:.3g} "

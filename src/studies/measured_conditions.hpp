@@ -76,6 +76,9 @@ struct ConditionRunSettings {
   // Share of the frictional heat that goes into the workpiece; none: the preset's (all of it), and the
   // case text stays that of the runs before the option (their records match).
   std::optional<double> friction_heat_share;
+  // Heat transfer coefficient to the tool, W/(m^2 K), and its temperature, K; none: an adiabatic tool.
+  std::optional<double> tool_heat_transfer_coefficient;
+  std::optional<double> tool_temperature;
   int snapshots = 0;        // VTU snapshots of each run; 0: 2 with quick, else 20
 };
 

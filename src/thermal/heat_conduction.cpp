@@ -45,12 +45,19 @@ void conduct_heat(Particles& P, Grid& G, std::span<const ShapeFunction> body_sha
   });
   const std::size_t nn = G.node_count();
   std::vector<double>& dT = G.heat_rate;  // reused: becomes the nodal temperature increment
+  const bool sinks = !G.sink_conductance.empty();
 #pragma omp parallel for schedule(static) if (parallel)
   for (std::size_t node = 0; node < nn; ++node) {
     if (G.heat_capacity[node] <= 0.0) {
       dT[node] = 0.0;
     } else if (G.fixed[node] & 4) {
       dT[node] = G.fixed_temperature[node] - G.temperature[node];
+    } else if (sinks && G.sink_conductance[node] > 0.0) {
+      // Heat flow g (T_sink - T) to a rigid body, implicit in T: stable for any g dt / C (the node
+      // approaches the sink's temperature instead of overshooting it).
+      const double g = G.sink_conductance[node];
+      dT[node] = dt * (G.heat_rate[node] + g * (G.sink_temperature[node] - G.temperature[node])) /
+                 (G.heat_capacity[node] + dt * g);
     } else {
       dT[node] = dt * G.heat_rate[node] / G.heat_capacity[node];
     }

@@ -49,6 +49,7 @@ const std::vector<std::pair<std::string, std::string>> kAllowed = {
     {"cutting.edge_radius", "0"},  // a sharp tool
     {"cutting.friction", "0"},     // frictionless
     {"cutting.friction_heat_share", "0"},  // all frictional heat into the tool
+    {"cutting.tool_heat_transfer_coefficient", "0"},  // adiabatic tool
     {"cutting.steady_start_fraction", "0"},
     {"rounding_radius", "0"},
     {"friction", "0"},

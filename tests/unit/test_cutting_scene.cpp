@@ -45,8 +45,8 @@ TEST(CuttingScene, MachinedSurfaceLiesOnANodeRowOnEveryGrid) {
   EXPECT_EQ(machined_surface_on_node_row(0.4e-3, 0.1e-3, 0.1e-3 / 24.0), 0.4e-3);
 }
 
-// The tool of the preset carries the process's friction and frictional-heat share.
-TEST(CuttingScene, ToolCarriesFrictionAndFrictionHeatShare) {
+// The tool of the preset carries the process's friction, frictional-heat share and heat transfer.
+TEST(CuttingScene, ToolCarriesFrictionAndHeatTransfer) {
   MaterialParameters m;
   m.name = "ti";
   CuttingParameters c;
@@ -55,10 +55,14 @@ TEST(CuttingScene, ToolCarriesFrictionAndFrictionHeatShare) {
   c.cut_length = 0.2e-3;
   c.friction = 0.2;
   c.friction_heat_share = 0.4;
+  c.tool_heat_transfer_coefficient = 1e6;
+  c.tool_temperature = 500.0;
   const Scene s = build_cutting_scene(c, m);
   ASSERT_EQ(s.rigid_bodies.size(), 1u);
   EXPECT_EQ(s.rigid_bodies[0].friction, 0.2);
   EXPECT_EQ(s.rigid_bodies[0].friction_heat_share, 0.4);
+  EXPECT_EQ(s.rigid_bodies[0].heat_transfer_coefficient, 1e6);
+  EXPECT_EQ(s.rigid_bodies[0].temperature, 500.0);
   c.friction_heat_share = CuttingParameters{}.friction_heat_share;  // the default: all of it
   EXPECT_EQ(build_cutting_scene(c, m).rigid_bodies[0].friction_heat_share, 1.0);
 }

@@ -275,6 +275,9 @@ TEST(SceneValidation, RangesOfSolverAndThermal) {
                "friction", {"key 'rigid_body[0].friction'", "must be in [0, 2]"});
   expect_error(kBase + "[[rigid_body]]\nname = \"tool\"\npolygon = [[0, 0], [1, 0], [0, 1]]\nfriction_heat_share = 1.5\n",
                "friction_heat_share", {"key 'rigid_body[0].friction_heat_share'", "must be in [0, 1]"});
+  // The heat a rigid body takes is part of the conduction update: without conduction it is an error.
+  expect_error(kBase + "[[rigid_body]]\nname = \"tool\"\npolygon = [[0, 0], [1, 0], [0, 1]]\nheat_transfer_coefficient = 1e5\n",
+               "heat_transfer_coefficient", {"key 'rigid_body[0].heat_transfer_coefficient'", "thermal.conduction = true"});
   expect_error(edit("[solver]", "[thermal]\nleft = -5.0\n[solver]"), "left = -5", {"key 'thermal.left'", "must be in (0, 10000] K"});
   expect_error(edit("rectangle =", "temperature = 0\nrectangle ="), "temperature", {"key 'body[0].temperature'"});
 }
@@ -500,6 +503,8 @@ polygon = [[1.0, 0.0], [2.0, 0.0], [2.0, 1.0]]
 velocity = [-1.0, 0.0]
 friction = 0.35
 friction_heat_share = 0.4
+heat_transfer_coefficient = 1.0e5
+temperature = 350.0
 rounding_radius = 0.05
 )";
   const Scene s = parse_scene(text, "case.toml",
