@@ -179,6 +179,8 @@ void CuttingForcesObserver::at_finish(const Simulation& sim, nlohmann::json& sum
                            {"edge_radius_m", c_.edge_radius},
                            {"friction", c_.friction},
                            {"friction_heat_share", c_.friction_heat_share},
+                           {"tool_heat_transfer_coefficient_W_per_m2K", c_.tool_heat_transfer_coefficient},
+                           {"tool_temperature_K", c_.tool_temperature},
                            {"initial_temperature_K", c_.initial_temperature},
                            {"cell_size_m", sim.grid().h},
                            {"particles_per_cell", c_.particles_per_cell}};
