@@ -63,7 +63,9 @@ RigidBodySpec make_cutting_tool(const CuttingParameters& c, const ToolPlacement&
   tool.friction = c.friction;
   tool.friction_heat_share = c.friction_heat_share;
   tool.heat_transfer_coefficient = c.tool_heat_transfer_coefficient;
-  tool.temperature = c.tool_temperature;
+  // Its temperature matters only where it exchanges heat (and an adiabatic tool's scene stays the
+  // text it was before the tool had one).
+  if (c.tool_heat_transfer_coefficient > 0.0) tool.temperature = c.tool_temperature;
   return tool;
 }
 
