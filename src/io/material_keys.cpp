@@ -49,7 +49,14 @@ void require_table_keys(TableReader& t, const ParameterTable<P>& table, const Ma
 template <class P>
 void write_table(const ParameterTable<P>& table, const MaterialParameters& m, std::ostream& out) {
   const P& p = m;
+  const P defaults{};
   for (const Parameter<P>& row : table.parameters) {
+    if (row.written_only_if_set) {
+      const bool is_default = row.kind == Parameter<P>::Kind::Number ? p.*row.number == defaults.*row.number
+                              : row.kind == Parameter<P>::Kind::Flag ? p.*row.flag == defaults.*row.flag
+                                                                     : row.get_option(p) == row.get_option(defaults);
+      if (is_default) continue;
+    }
     out << row.key << " = ";
     switch (row.kind) {
       case Parameter<P>::Kind::Number: out << toml_number(p.*row.number); break;

@@ -7,6 +7,15 @@
 // The rate term is floored at epsdot* = 1 (no rate effect below epsdot0, as in Abaqus), so ln(0)
 // never occurs; T* is clamped at 0 below room temperature (pow of a negative base is NaN for a
 // non-integer m) and at 1, where the strength is zero (melt).
+//
+// With flow_softening = "tanh" (Calamaz et al. 2008, Sima & Oezel 2010; theory_materials.md 2.5) the
+// hardening term is damped at large strain and a temperature-dependent softening factor multiplies it:
+//
+//   sigma_y = [A + B eps^n exp(-eps^a)] [1 + C ln(epsdot*)] [1 - T*^m] W,
+//   W = D + (1 - D) tanh(1/(eps + S)^c)^s,   D = 1 - (T/T_m)^d,   S = (T/T_m)^b,
+//
+// so that a hot band that has flowed far carries less stress: the strain softening behind the
+// adiabatic shear bands of serrated titanium chips.
 #include "physics/material_parameters.hpp"
 
 namespace mpmcut {
@@ -31,9 +40,11 @@ class JohnsonCookFlowStress {
   // max(ln(epsdot/epsdot0), 0): the floored logarithm shared by flow and damage.
   double log_rate_ratio(double plastic_strain_rate) const;
 
-  double hardening(double plastic_strain) const;           // A + B eps^n, Pa
+  double hardening(double plastic_strain) const;           // A + B eps^n (TANH: x exp(-eps^a)), Pa
   double rate_factor(double plastic_strain_rate) const;    // 1 + C ln(epsdot*) >= 1
   double thermal_factor(double temperature_K) const;       // 1 - T*^m in [0, 1]
+  // W of the TANH softening in [D, 1]; 1 without it.
+  double softening_factor(double plastic_strain, double temperature_K) const;
 
   double yield_stress(double plastic_strain, double plastic_strain_rate, double temperature_K) const;
   // Yield stress with its partial derivatives (used by the Newton solve of the return mapping).
@@ -43,6 +54,10 @@ class JohnsonCookFlowStress {
   bool melted(double temperature_K) const { return temperature_K >= melting_temperature_; }
 
   double initial_yield_stress() const { return A_; }
+  // A stress below which a state at or below room temperature is surely elastic at any strain and rate:
+  // A, times D(T_r) with the TANH softening (H >= A, the rate factor >= 1, W >= D(T) >= D(T_r) there).
+  double elastic_limit_at_room_temperature() const;
+  bool softens() const { return tanh_softening_; }
   bool rate_dependent() const { return rate_dependent_; }
 
  private:
@@ -52,6 +67,14 @@ class JohnsonCookFlowStress {
   bool hardening_is_linear_;  // n == 1: no pow
   bool rate_dependent_;       // C != 0: otherwise no log
   bool thermal_is_linear_;    // m == 1: no pow
+  bool tanh_softening_;       // flow_softening = "tanh"
+  double tanh_a_, tanh_b_, tanh_c_, tanh_d_, tanh_s_;
+
+  // W and its partial derivatives dW/deps, dW/dT.
+  struct Softening {
+    double factor = 1.0, d_strain = 0.0, d_temperature = 0.0;
+  };
+  Softening softening(double plastic_strain, double temperature_K) const;
 };
 
 }  // namespace mpmcut

@@ -5,7 +5,10 @@
 
 namespace mpmcut {
 
-// sigma_y = (A + B eps^n)(1 + C ln(epsdot/epsdot0))(1 - T*^m)
+// Optional strain softening of the flow stress at large strain and high temperature (flow_stress.hpp).
+enum class FlowSoftening { None, Tanh };
+
+// sigma_y = (A + B eps^n)(1 + C ln(epsdot/epsdot0))(1 - T*^m), optionally with the TANH terms
 struct FlowStressParameters {
   double jc_A = 0.0;                   // Pa
   double jc_B = 0.0;                   // Pa
@@ -15,6 +18,15 @@ struct FlowStressParameters {
   double reference_strain_rate = 1.0;  // epsdot0, 1/s
   // Time scale of the exponential moving average of the plastic strain rate, s (0: no smoothing)
   double strain_rate_smoothing_time = 0.0;
+  // TANH softening (Calamaz et al. 2008; Sima & Oezel 2010), all dimensionless; 0 while not in use:
+  // sigma_y = [A + B eps^n exp(-eps^a)] R Theta [D + (1 - D) tanh(1/(eps + S)^c)^s],
+  // D = 1 - (T/T_m)^d, S = (T/T_m)^b.
+  FlowSoftening flow_softening = FlowSoftening::None;
+  double tanh_a = 0.0;
+  double tanh_b = 0.0;
+  double tanh_c = 0.0;
+  double tanh_d = 0.0;
+  double tanh_s = 0.0;
 
   bool operator==(const FlowStressParameters&) const = default;
 };
@@ -44,6 +56,34 @@ inline const ParameterTable<FlowStressParameters>& flow_stress_parameter_table()
               .used_with(InUse::JohnsonCook),
           number("strain_rate_smoothing_time", &P::strain_rate_smoothing_time, "s", Range::closed(0.0, 1.0),
                  "time scale of the moving average of the plastic strain rate; 0 = none"),
+          choice<P, &P::flow_softening>("flow_softening", {"none", "tanh"},
+                                        "strain softening of the flow stress at large strain and high temperature: "
+                                        "none (Johnson-Cook), or the TANH terms of Calamaz et al. 2008 / Sima & Oezel "
+                                        "2010 (docs/theory_materials.md 2.5)")
+              .written_if_set(),
+          number("tanh_a", &P::tanh_a, "-", Range::open_closed(0.0, 10.0),
+                 "a: the hardening term B eps^n is damped by exp(-eps^a)")
+              .used_with(InUse::TanhSoftening)
+              .required_key()
+              .written_if_set(),
+          number("tanh_b", &P::tanh_b, "-", Range::open_closed(0.0, 50.0), "b: S = (T/T_m)^b")
+              .used_with(InUse::TanhSoftening)
+              .required_key()
+              .written_if_set(),
+          number("tanh_c", &P::tanh_c, "-", Range::open_closed(0.0, 10.0), "c: tanh(1/(eps + S)^c)")
+              .used_with(InUse::TanhSoftening)
+              .required_key()
+              .written_if_set(),
+          number("tanh_d", &P::tanh_d, "-", Range::open_closed(0.0, 10.0),
+                 "d: D = 1 - (T/T_m)^d, the share of the flow stress that does not soften")
+              .used_with(InUse::TanhSoftening)
+              .required_key()
+              .written_if_set(),
+          number("tanh_s", &P::tanh_s, "-", Range::open_closed(0.0, 10.0),
+                 "s: exponent of the tanh term (1 in Calamaz et al. 2008)")
+              .used_with(InUse::TanhSoftening)
+              .required_key()
+              .written_if_set(),
       },
       {
           {"jc_B", InUse::JohnsonCook, [](const P& p) { return p.jc_A + p.jc_B > 0.0; },

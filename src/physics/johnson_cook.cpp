@@ -23,7 +23,7 @@ JohnsonCookMaterial::JohnsonCookMaterial(const MaterialParameters& params)
       smoothing_time_(params.strain_rate_smoothing_time),
       taylor_quinney_(params.taylor_quinney),
       heat_per_work_(0.0),
-      sure_elastic_q_(params.jc_A),
+      sure_elastic_q_(flow_.elastic_limit_at_room_temperature()),
       room_temperature_(params.room_temperature) {
   // Validated by Material (the parameter tables): for johnson_cook, specific_heat > 0.
   if (params.taylor_quinney > 0.0) heat_per_work_ = params.taylor_quinney / params.specific_heat;

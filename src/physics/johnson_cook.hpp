@@ -59,7 +59,7 @@ class JohnsonCookMaterial final : public Material {
   double smoothing_time_;
   double taylor_quinney_;  // chi
   double heat_per_work_;   // chi/c: temperature rise = heat_per_work_ * w / rho, J/kg per J/m^3 -> K
-  double sure_elastic_q_;  // q_trial below this is elastic at T <= T_r without evaluating sigma_y (= A)
+  double sure_elastic_q_;  // q_trial below this is elastic at T <= T_r without evaluating sigma_y (A, or A D(T_r) with the TANH softening)
   double room_temperature_;
 };
 

@@ -29,6 +29,7 @@ bool in_use(InUse use, const MaterialParameters& m) {
     case InUse::MieGruneisen: return m.eos == EquationOfState::MieGruneisen;
     case InUse::Damage: return m.damage_enabled;
     case InUse::RateDependentFractureEnergy: return m.fracture_transition_strain_rate > 0.0;
+    case InUse::TanhSoftening: return m.model == MaterialModel::JohnsonCook && m.flow_softening == FlowSoftening::Tanh;
   }
   return true;
 }
@@ -40,6 +41,7 @@ std::string_view describe(InUse use) {
     case InUse::MieGruneisen: return "eos = \"mie_gruneisen\"";
     case InUse::Damage: return "damage = true";
     case InUse::RateDependentFractureEnergy: return "fracture_transition_strain_rate > 0";
+    case InUse::TanhSoftening: return "flow_softening = \"tanh\"";
   }
   return "";
 }

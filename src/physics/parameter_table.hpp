@@ -18,7 +18,7 @@ namespace mpmcut {
 // When a parameter is used: always, or only with one of the material's switches. A parameter that
 // is not in use may also hold 0 (its default; the expanded scene.toml writes it back), so that a
 // wrong value does not hide until the switch is turned on; a flag that is not in use must be false.
-enum class InUse { Always, JohnsonCook, MieGruneisen, Damage, RateDependentFractureEnergy };
+enum class InUse { Always, JohnsonCook, MieGruneisen, Damage, RateDependentFractureEnergy, TanhSoftening };
 
 template <class P>
 struct Parameter {
@@ -44,11 +44,15 @@ struct Parameter {
   // physics constructor the range without its caps, so that a test may drive a model with, say, a
   // 10^4 times stiffer driver. By default the upper end is a cap and the lower end a limit.
   bool min_is_cap = false, max_is_cap = true;
+  // Written into an expanded scene only when it differs from its default: keys added after run records
+  // were made leave the scene text of every run that does not use them as it was (studies/run_records).
+  bool written_only_if_set = false;
 
   Parameter used_with(InUse u) && { use = u; return std::move(*this); }
   Parameter required_key() && { required = true; return std::move(*this); }
   Parameter model_limit_above() && { max_is_cap = false; return std::move(*this); }
   Parameter capped_below() && { min_is_cap = true; return std::move(*this); }
+  Parameter written_if_set() && { written_only_if_set = true; return std::move(*this); }
   Parameter above(double P::*field, std::string_view key_of_field) && {
     min_from = field;
     min_from_key = key_of_field;

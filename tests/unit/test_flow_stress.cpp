@@ -5,6 +5,7 @@
 // rho = 4430, c = 526.3 (Payette; docs/materials.md).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -18,8 +19,6 @@
 using namespace mpmcut;
 using mpmcut::testing::ti64_johnson_1985;
 
-namespace {
-}  // namespace
 
 // theory §2, Eq. (2.1): self-check values (Johnson 85 set, T_m = 1878 K),
 // computed by hand: 862, 1248, 815, 540 MPa.
@@ -111,11 +110,110 @@ TEST(JohnsonCookFlowStress, RejectsUnusableParameters) {
   EXPECT_THROW(JohnsonCookMaterial{m}, std::invalid_argument);
 }
 
+namespace {
+// Sima & Oezel 2010 model 3 (theory §2, Eq. 2.5): Lee & Lin set b with the TANH softening a = 2, b = 5,
+// c = 2, d = 1, s = 0.05 (materials/ti6al4v.toml, ti64-sima-ozel-2010), written out here.
+MaterialParameters sima_ozel_2010() {
+  MaterialParameters m = ti64_johnson_1985();
+  m.jc_A = 724.7e6;
+  m.jc_B = 683.1e6;
+  m.jc_n = 0.47;
+  m.jc_C = 0.035;
+  m.jc_m = 1.0;
+  m.flow_softening = FlowSoftening::Tanh;
+  m.tanh_a = 2.0;
+  m.tanh_b = 5.0;
+  m.tanh_c = 2.0;
+  m.tanh_d = 1.0;
+  m.tanh_s = 0.05;
+  return m;
+}
+}  // namespace
+
+// theory §2, Eq. (2.5): values worked out from the published formula (by hand, in a calculator script):
+// 724.7, 1466.2, 928.5, 533.4, 313.7 MPa, and the formula written out independently here.
+TEST(TanhFlowSoftening, ReproducesTheSimaOzelFormula) {
+  const JohnsonCookFlowStress f(sima_ozel_2010());
+  EXPECT_TRUE(f.softens());
+  EXPECT_NEAR(f.yield_stress(0.0, 1.0, 298.0), 724.7e6, 0.05e6);
+  EXPECT_NEAR(f.yield_stress(0.5, 1e4, 298.0), 1466.21e6, 0.05e6);
+  EXPECT_NEAR(f.yield_stress(1.0, 1e5, 800.0), 928.541e6, 0.05e6);
+  EXPECT_NEAR(f.yield_stress(3.0, 1e5, 1000.0), 533.357e6, 0.05e6);
+  EXPECT_NEAR(f.yield_stress(2.0, 1e6, 1400.0), 313.748e6, 0.05e6);
+  const double eps = 1.7, rate = 3e4, T = 900.0, Tm = 1878.0;
+  const double H = 724.7e6 + 683.1e6 * std::pow(eps, 0.47) * std::exp(-eps * eps);
+  const double D = 1.0 - T / Tm, S = std::pow(T / Tm, 5.0);
+  const double W = D + (1.0 - D) * std::pow(std::tanh(1.0 / ((eps + S) * (eps + S))), 0.05);
+  const double expected = H * (1.0 + 0.035 * std::log(rate)) * (1.0 - (T - 298.0) / (Tm - 298.0)) * W;
+  EXPECT_NEAR(f.yield_stress(eps, rate, T), expected, 1e-12 * expected);
+  EXPECT_NEAR(f.softening_factor(eps, T), W, 1e-14);
+  EXPECT_NEAR(f.hardening(eps), H, 1e-6);
+  // Without the switch the same constants are plain Johnson-Cook: no damping, W = 1.
+  MaterialParameters plain = sima_ozel_2010();
+  plain.flow_softening = FlowSoftening::None;
+  const JohnsonCookFlowStress g(plain);
+  EXPECT_FALSE(g.softens());
+  EXPECT_EQ(g.softening_factor(eps, T), 1.0);
+  EXPECT_NEAR(g.hardening(eps), 724.7e6 + 683.1e6 * std::pow(eps, 0.47), 1e-6);
+}
+
+// What the softening is for: at large strain the flow stress falls (Johnson-Cook only hardens), the more
+// the hotter the material (W falls towards D = 1 - T/T_m), and it never falls below A D R Theta.
+TEST(TanhFlowSoftening, SoftensAtLargeStrainAndMoreWhenHot) {
+  const JohnsonCookFlowStress f(sima_ozel_2010());
+  const double rate = 1e5;
+  for (double T : {298.0, 700.0, 1200.0}) {
+    SCOPED_TRACE(T);
+    const double peak = f.yield_stress(0.5, rate, T);
+    EXPECT_LT(f.yield_stress(2.0, rate, T), 0.7 * peak);  // B eps^n is damped by exp(-eps^2)
+    EXPECT_LT(f.yield_stress(6.0, rate, T), f.yield_stress(2.0, rate, T));
+    const double D = 1.0 - T / 1878.0;
+    EXPECT_GE(f.softening_factor(50.0, T), D);
+    EXPECT_LT(f.softening_factor(50.0, T), 1.0);
+  }
+  EXPECT_LT(f.softening_factor(3.0, 1200.0), f.softening_factor(3.0, 700.0));
+  EXPECT_LT(f.softening_factor(3.0, 700.0), f.softening_factor(3.0, 298.0));
+  // The surely-elastic bound of the return mapping: no state at room temperature yields below it.
+  const double bound = f.elastic_limit_at_room_temperature();
+  EXPECT_NEAR(bound, 724.7e6 * (1.0 - 298.0 / 1878.0), 1.0);
+  for (double eps : {0.0, 0.5, 3.0, 10.0, 100.0}) EXPECT_GE(f.yield_stress(eps, 1.0, 298.0), bound) << eps;
+  EXPECT_LT(f.yield_stress(10.0, 1.0, 298.0), 724.7e6);  // so A alone would be the wrong bound
+}
+
+// theory §2, Eq. (2.5): the analytic partial derivatives with the softening agree with central differences,
+// also where W moves fast (small strain, hot: S = (T/T_m)^5 comparable with eps) and where the damping peaks.
+TEST(TanhFlowSoftening, DerivativesMatchFiniteDifferences) {
+  const JohnsonCookFlowStress f(sima_ozel_2010());
+  struct State { double eps, rate, T; };
+  for (const State s : {State{0.05, 1e3, 400.0}, State{0.6, 2e5, 1100.0}, State{2.0, 5e6, 1700.0},
+                        State{0.02, 1e4, 1600.0}, State{4.0, 1e5, 900.0}}) {
+    SCOPED_TRACE(s.eps);
+    const FlowStressValue v = f.evaluate(s.eps, s.rate, s.T);
+    EXPECT_NEAR(v.stress, f.yield_stress(s.eps, s.rate, s.T), 1e-12 * v.stress);
+    const double he = 1e-6 * s.eps, hr = 1e-6 * s.rate, hT = 1e-3;
+    const double de = (f.yield_stress(s.eps + he, s.rate, s.T) - f.yield_stress(s.eps - he, s.rate, s.T)) / (2 * he);
+    const double dr = (f.yield_stress(s.eps, s.rate + hr, s.T) - f.yield_stress(s.eps, s.rate - hr, s.T)) / (2 * hr);
+    const double dT = (f.yield_stress(s.eps, s.rate, s.T + hT) - f.yield_stress(s.eps, s.rate, s.T - hT)) / (2 * hT);
+    EXPECT_NEAR(v.d_strain, de, 1e-5 * std::abs(de) + 1e-3);
+    EXPECT_NEAR(v.d_rate, dr, 1e-6 * std::abs(dr));
+    EXPECT_NEAR(v.d_temperature, dT, 1e-5 * std::abs(dT));
+  }
+  // eps = 0 at room temperature: W = 1 exactly (tanh saturates), no NaN from the overflowing power.
+  const FlowStressValue v0 = f.evaluate(0.0, 1.0, 298.0);
+  EXPECT_EQ(v0.stress, 724.7e6);
+  EXPECT_FALSE(std::isnan(v0.d_temperature));
+  MaterialParameters steep = sima_ozel_2010();
+  steep.tanh_b = 50.0;
+  steep.tanh_c = 10.0;  // u = (eps + S)^-c overflows to inf at eps = 0
+  const FlowStressValue v1 = JohnsonCookFlowStress(steep).evaluate(0.0, 1.0, 500.0);
+  EXPECT_TRUE(std::isfinite(v1.stress) && std::isfinite(v1.d_temperature)) << v1.stress << " " << v1.d_temperature;
+}
+
 // theory §4, Eq. (4.5): the plastic corrector solves the consistency equation to 1e-12 relative, with
 // the smoothed rate and the implicit end-of-step temperature, for cold/hot, slow/fast and smoothed rates.
 TEST(JohnsonCookReturnMapping, SolvesConsistencyToRoundOff) {
-  for (double tau : {0.0, 1e-7}) {
-    MaterialParameters m = ti64_johnson_1985();
+  for (double tau : {0.0, 1e-7}) for (const bool tanh : {false, true}) {
+    MaterialParameters m = tanh ? sima_ozel_2010() : ti64_johnson_1985();
     m.strain_rate_smoothing_time = tau;
     const JohnsonCookMaterial jc(m);
     const double G = m.shear_modulus();
@@ -125,18 +223,20 @@ TEST(JohnsonCookReturnMapping, SolvesConsistencyToRoundOff) {
                          Case{7.0e8, 2.0, 3e4, 1800.0, 1e-9}}) {
       const double h = 0.9 / (526.3 * 4430.0);
       const double rate0 = jc.smoothed_rate(c.old_rate, 0.0, c.dt);
-      ASSERT_GT(c.q_tr, jc.flow_stress().yield_stress(c.eps, rate0, c.T));
-      const auto rm = jc.return_mapping(c.q_tr, c.eps, c.old_rate, c.T, h, c.dt);
+      // The softening set hardens more at small strain: its trial stresses are raised to 10 % above yield.
+      const double q_tr = tanh ? std::max(c.q_tr, 1.1 * jc.flow_stress().yield_stress(c.eps, rate0, c.T)) : c.q_tr;
+      ASSERT_GT(q_tr, jc.flow_stress().yield_stress(c.eps, rate0, c.T));
+      const auto rm = jc.return_mapping(q_tr, c.eps, c.old_rate, c.T, h, c.dt);
       const double x = rm.plastic_increment;
       ASSERT_GT(x, 0.0);
-      ASSERT_LT(x, c.q_tr / (3 * G));
+      ASSERT_LT(x, q_tr / (3 * G));
       // Everything reported is consistent with x ...
       EXPECT_DOUBLE_EQ(rm.rate, jc.smoothed_rate(c.old_rate, x, c.dt));
-      EXPECT_DOUBLE_EQ(rm.temperature, c.T + h * (c.q_tr - 3 * G * x) * x);
+      EXPECT_DOUBLE_EQ(rm.temperature, c.T + h * (q_tr - 3 * G * x) * x);
       const double sy = jc.flow_stress().yield_stress(c.eps + x, rm.rate, rm.temperature);
       EXPECT_DOUBLE_EQ(rm.flow_stress, sy);
       // ... and x is the root: q_tr - 3G x = sigma_y(eps + x, rate(x), T(x)).
-      EXPECT_NEAR(c.q_tr - 3 * G * x, sy, 1e-11 * c.q_tr) << "tau " << tau << " q_tr " << c.q_tr;
+      EXPECT_NEAR(q_tr - 3 * G * x, sy, 1e-11 * q_tr) << "tau " << tau << " tanh " << tanh << " q_tr " << q_tr;
       EXPECT_LT(rm.iterations, 80);
     }
   }

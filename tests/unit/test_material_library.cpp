@@ -91,6 +91,18 @@ TEST(MaterialLibrary, KlippelCalibratedSetIsTheCuttingSetWithTheFittedAAndM) {
   EXPECT_NE(builtin_material_library().find("ti64-klippel-2speed")->citation.find("Klippel"), std::string::npos);
 }
 
+// Sima & Oezel 2010 model 3: the Lee & Lin set b with the TANH softening switched on, nothing else changed.
+TEST(MaterialLibrary, SimaOzelSetIsLeeLinBWithTheTanhSoftening) {
+  expect_derived_set("ti64-sima-ozel-2010", "ti64-lee-lin-1998-sima", [](MaterialParameters& m) {
+    m.flow_softening = FlowSoftening::Tanh;
+    m.tanh_a = 2.0;
+    m.tanh_b = 5.0;
+    m.tanh_c = 2.0;
+    m.tanh_d = 1.0;
+    m.tanh_s = 0.05;
+  });
+}
+
 TEST(MaterialLibrary, HasGenericElasticSets) {
   const MaterialLibrary& lib = builtin_material_library();
   for (const char* name : {"elastic-unit", "elastic-steel", "elastic-aluminium", "elastic-tungsten-carbide"}) {
