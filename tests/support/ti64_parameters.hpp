@@ -28,6 +28,31 @@ inline MaterialParameters ti64_johnson_1985() {
   return m;
 }
 
+// `m` with the TANH softening of Sima & Oezel 2010, model 3: a = 2, b = 5, c = 2, d = 1, s = 0.05
+// (docs/theory_materials.md 2.5, docs/materials.md).
+inline MaterialParameters with_sima_ozel_softening(MaterialParameters m) {
+  m.flow_softening = FlowSoftening::Tanh;
+  m.tanh_a = 2.0;
+  m.tanh_b = 5.0;
+  m.tanh_c = 2.0;
+  m.tanh_d = 1.0;
+  m.tanh_s = 0.05;
+  return m;
+}
+
+// Sima & Oezel 2010 model 3: the Lee & Lin 1998 set b (A 724.7 MPa, B 683.1 MPa, n 0.47, C 0.035, m 1) with
+// their TANH softening; the other constants as ti64_johnson_1985.
+inline MaterialParameters ti64_sima_ozel_2010() {
+  MaterialParameters m = ti64_johnson_1985();
+  m.name = "ti64-sima-ozel-2010";
+  m.jc_A = 724.7e6;
+  m.jc_B = 683.1e6;
+  m.jc_n = 0.47;
+  m.jc_C = 0.035;
+  m.jc_m = 1.0;
+  return with_sima_ozel_softening(m);
+}
+
 // `m` with Johnson-Cook damage initiation and Hillerborg evolution switched on.
 inline MaterialParameters with_jc_damage(MaterialParameters m, DamageEvolution law = DamageEvolution::Linear,
                                          double G_f = 2.0e4) {

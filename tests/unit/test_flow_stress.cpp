@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 #include <stdexcept>
 
@@ -18,7 +19,34 @@
 
 using namespace mpmcut;
 using mpmcut::testing::ti64_johnson_1985;
+using mpmcut::testing::ti64_sima_ozel_2010;
 
+
+namespace {
+struct State {
+  double eps, rate, T;
+};
+
+// The analytic partial derivatives of sigma_y agree with central differences (steps: 1e-6 relative in strain
+// and rate, hT in temperature) to `tolerance` relative in the strain slope (1e-3 Pa absolute besides) and the
+// rate slope and 10 x tolerance in the temperature slope; evaluate() also returns yield_stress() itself.
+void expect_derivatives_match_finite_differences(const JohnsonCookFlowStress& f, std::initializer_list<State> states,
+                                                 double hT, double tolerance) {
+  for (const State s : states) {
+    SCOPED_TRACE(s.eps);
+    const FlowStressValue v = f.evaluate(s.eps, s.rate, s.T);
+    EXPECT_NEAR(v.stress, f.yield_stress(s.eps, s.rate, s.T), 1e-12 * v.stress);
+    const double he = 1e-6 * s.eps, hr = 1e-6 * s.rate;
+    const double de = (f.yield_stress(s.eps + he, s.rate, s.T) - f.yield_stress(s.eps - he, s.rate, s.T)) / (2 * he);
+    const double dr = (f.yield_stress(s.eps, s.rate + hr, s.T) - f.yield_stress(s.eps, s.rate - hr, s.T)) / (2 * hr);
+    const double dT = (f.yield_stress(s.eps, s.rate, s.T + hT) - f.yield_stress(s.eps, s.rate, s.T - hT)) / (2 * hT);
+    EXPECT_NEAR(v.d_strain, de, tolerance * std::abs(de) + 1e-3);
+    EXPECT_NEAR(v.d_rate, dr, 1e-6 * std::abs(dr));
+    EXPECT_NEAR(v.d_temperature, dT, 10 * tolerance * std::abs(dT));
+    EXPECT_NEAR(v.log_rate_ratio, std::log(s.rate), 1e-14 * std::log(s.rate));
+  }
+}
+}  // namespace
 
 // theory §2, Eq. (2.1): self-check values (Johnson 85 set, T_m = 1878 K),
 // computed by hand: 862, 1248, 815, 540 MPa.
@@ -76,19 +104,8 @@ TEST(JohnsonCookFlowStress, TemperatureClampsAndMelt) {
 // differences (a wrong derivative would still converge through bisection, but slowly; this catches it).
 TEST(JohnsonCookFlowStress, DerivativesMatchFiniteDifferences) {
   const JohnsonCookFlowStress f(ti64_johnson_1985());
-  struct State { double eps, rate, T; };
-  for (const State s : {State{0.05, 1e3, 400.0}, State{0.8, 2e5, 1100.0}, State{2.0, 5e6, 1700.0}}) {
-    const FlowStressValue v = f.evaluate(s.eps, s.rate, s.T);
-    EXPECT_NEAR(v.stress, f.yield_stress(s.eps, s.rate, s.T), 1e-9 * v.stress);
-    const double he = 1e-6 * s.eps, hr = 1e-6 * s.rate, hT = 1e-4;
-    const double de = (f.yield_stress(s.eps + he, s.rate, s.T) - f.yield_stress(s.eps - he, s.rate, s.T)) / (2 * he);
-    const double dr = (f.yield_stress(s.eps, s.rate + hr, s.T) - f.yield_stress(s.eps, s.rate - hr, s.T)) / (2 * hr);
-    const double dT = (f.yield_stress(s.eps, s.rate, s.T + hT) - f.yield_stress(s.eps, s.rate, s.T - hT)) / (2 * hT);
-    EXPECT_NEAR(v.d_strain, de, 1e-6 * std::abs(de));
-    EXPECT_NEAR(v.d_rate, dr, 1e-6 * std::abs(dr));
-    EXPECT_NEAR(v.d_temperature, dT, 1e-5 * std::abs(dT));
-    EXPECT_NEAR(v.log_rate_ratio, std::log(s.rate), 1e-14 * std::log(s.rate));
-  }
+  expect_derivatives_match_finite_differences(
+      f, {State{0.05, 1e3, 400.0}, State{0.8, 2e5, 1100.0}, State{2.0, 5e6, 1700.0}}, 1e-4, 1e-6);
   // Floors: no rate or temperature slope there; n < 1 gives an infinite hardening slope at eps = 0.
   const FlowStressValue v0 = f.evaluate(0.0, 0.5, 250.0);
   EXPECT_EQ(v0.d_rate, 0.0);
@@ -110,30 +127,11 @@ TEST(JohnsonCookFlowStress, RejectsUnusableParameters) {
   EXPECT_THROW(JohnsonCookMaterial{m}, std::invalid_argument);
 }
 
-namespace {
-// Sima & Oezel 2010 model 3 (theory §2, Eq. 2.5): Lee & Lin set b with the TANH softening a = 2, b = 5,
-// c = 2, d = 1, s = 0.05 (materials/ti6al4v.toml, ti64-sima-ozel-2010), written out here.
-MaterialParameters sima_ozel_2010() {
-  MaterialParameters m = ti64_johnson_1985();
-  m.jc_A = 724.7e6;
-  m.jc_B = 683.1e6;
-  m.jc_n = 0.47;
-  m.jc_C = 0.035;
-  m.jc_m = 1.0;
-  m.flow_softening = FlowSoftening::Tanh;
-  m.tanh_a = 2.0;
-  m.tanh_b = 5.0;
-  m.tanh_c = 2.0;
-  m.tanh_d = 1.0;
-  m.tanh_s = 0.05;
-  return m;
-}
-}  // namespace
 
 // theory §2, Eq. (2.5): values worked out from the published formula (by hand, in a calculator script):
 // 724.7, 1466.2, 928.5, 533.4, 313.7 MPa, and the formula written out independently here.
 TEST(TanhFlowSoftening, ReproducesTheSimaOzelFormula) {
-  const JohnsonCookFlowStress f(sima_ozel_2010());
+  const JohnsonCookFlowStress f(ti64_sima_ozel_2010());
   EXPECT_TRUE(f.softens());
   EXPECT_NEAR(f.yield_stress(0.0, 1.0, 298.0), 724.7e6, 0.05e6);
   EXPECT_NEAR(f.yield_stress(0.5, 1e4, 298.0), 1466.21e6, 0.05e6);
@@ -149,7 +147,7 @@ TEST(TanhFlowSoftening, ReproducesTheSimaOzelFormula) {
   EXPECT_NEAR(f.softening_factor(eps, T), W, 1e-14);
   EXPECT_NEAR(f.hardening(eps), H, 1e-6);
   // Without the switch the same constants are plain Johnson-Cook: no damping, W = 1.
-  MaterialParameters plain = sima_ozel_2010();
+  MaterialParameters plain = ti64_sima_ozel_2010();
   plain.flow_softening = FlowSoftening::None;
   const JohnsonCookFlowStress g(plain);
   EXPECT_FALSE(g.softens());
@@ -160,7 +158,7 @@ TEST(TanhFlowSoftening, ReproducesTheSimaOzelFormula) {
 // What the softening is for: at large strain the flow stress falls (Johnson-Cook only hardens), the more
 // the hotter the material (W falls towards D = 1 - T/T_m), and it never falls below A D R Theta.
 TEST(TanhFlowSoftening, SoftensAtLargeStrainAndMoreWhenHot) {
-  const JohnsonCookFlowStress f(sima_ozel_2010());
+  const JohnsonCookFlowStress f(ti64_sima_ozel_2010());
   const double rate = 1e5;
   for (double T : {298.0, 700.0, 1200.0}) {
     SCOPED_TRACE(T);
@@ -183,26 +181,16 @@ TEST(TanhFlowSoftening, SoftensAtLargeStrainAndMoreWhenHot) {
 // theory §2, Eq. (2.5): the analytic partial derivatives with the softening agree with central differences,
 // also where W moves fast (small strain, hot: S = (T/T_m)^5 comparable with eps) and where the damping peaks.
 TEST(TanhFlowSoftening, DerivativesMatchFiniteDifferences) {
-  const JohnsonCookFlowStress f(sima_ozel_2010());
-  struct State { double eps, rate, T; };
-  for (const State s : {State{0.05, 1e3, 400.0}, State{0.6, 2e5, 1100.0}, State{2.0, 5e6, 1700.0},
-                        State{0.02, 1e4, 1600.0}, State{4.0, 1e5, 900.0}}) {
-    SCOPED_TRACE(s.eps);
-    const FlowStressValue v = f.evaluate(s.eps, s.rate, s.T);
-    EXPECT_NEAR(v.stress, f.yield_stress(s.eps, s.rate, s.T), 1e-12 * v.stress);
-    const double he = 1e-6 * s.eps, hr = 1e-6 * s.rate, hT = 1e-3;
-    const double de = (f.yield_stress(s.eps + he, s.rate, s.T) - f.yield_stress(s.eps - he, s.rate, s.T)) / (2 * he);
-    const double dr = (f.yield_stress(s.eps, s.rate + hr, s.T) - f.yield_stress(s.eps, s.rate - hr, s.T)) / (2 * hr);
-    const double dT = (f.yield_stress(s.eps, s.rate, s.T + hT) - f.yield_stress(s.eps, s.rate, s.T - hT)) / (2 * hT);
-    EXPECT_NEAR(v.d_strain, de, 1e-5 * std::abs(de) + 1e-3);
-    EXPECT_NEAR(v.d_rate, dr, 1e-6 * std::abs(dr));
-    EXPECT_NEAR(v.d_temperature, dT, 1e-5 * std::abs(dT));
-  }
+  const JohnsonCookFlowStress f(ti64_sima_ozel_2010());
+  expect_derivatives_match_finite_differences(f,
+                                              {State{0.05, 1e3, 400.0}, State{0.6, 2e5, 1100.0}, State{2.0, 5e6, 1700.0},
+                                               State{0.02, 1e4, 1600.0}, State{4.0, 1e5, 900.0}},
+                                              1e-3, 1e-5);
   // eps = 0 at room temperature: W = 1 exactly (tanh saturates), no NaN from the overflowing power.
   const FlowStressValue v0 = f.evaluate(0.0, 1.0, 298.0);
   EXPECT_EQ(v0.stress, 724.7e6);
   EXPECT_FALSE(std::isnan(v0.d_temperature));
-  MaterialParameters steep = sima_ozel_2010();
+  MaterialParameters steep = ti64_sima_ozel_2010();
   steep.tanh_b = 50.0;
   steep.tanh_c = 10.0;  // u = (eps + S)^-c overflows to inf at eps = 0
   const FlowStressValue v1 = JohnsonCookFlowStress(steep).evaluate(0.0, 1.0, 500.0);
@@ -213,7 +201,7 @@ TEST(TanhFlowSoftening, DerivativesMatchFiniteDifferences) {
 // the smoothed rate and the implicit end-of-step temperature, for cold/hot, slow/fast and smoothed rates.
 TEST(JohnsonCookReturnMapping, SolvesConsistencyToRoundOff) {
   for (double tau : {0.0, 1e-7}) for (const bool tanh : {false, true}) {
-    MaterialParameters m = tanh ? sima_ozel_2010() : ti64_johnson_1985();
+    MaterialParameters m = tanh ? ti64_sima_ozel_2010() : ti64_johnson_1985();
     m.strain_rate_smoothing_time = tau;
     const JohnsonCookMaterial jc(m);
     const double G = m.shear_modulus();

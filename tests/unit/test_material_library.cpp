@@ -8,6 +8,7 @@
 
 #include "io/input_error.hpp"
 #include "io/material_library.hpp"
+#include "../support/ti64_parameters.hpp"
 
 namespace mpmcut {
 namespace {
@@ -93,14 +94,8 @@ TEST(MaterialLibrary, KlippelCalibratedSetIsTheCuttingSetWithTheFittedAAndM) {
 
 // Sima & Oezel 2010 model 3: the Lee & Lin set b with the TANH softening switched on, nothing else changed.
 TEST(MaterialLibrary, SimaOzelSetIsLeeLinBWithTheTanhSoftening) {
-  expect_derived_set("ti64-sima-ozel-2010", "ti64-lee-lin-1998-sima", [](MaterialParameters& m) {
-    m.flow_softening = FlowSoftening::Tanh;
-    m.tanh_a = 2.0;
-    m.tanh_b = 5.0;
-    m.tanh_c = 2.0;
-    m.tanh_d = 1.0;
-    m.tanh_s = 0.05;
-  });
+  expect_derived_set("ti64-sima-ozel-2010", "ti64-lee-lin-1998-sima",
+                     [](MaterialParameters& m) { m = testing::with_sima_ozel_softening(m); });
 }
 
 TEST(MaterialLibrary, HasGenericElasticSets) {

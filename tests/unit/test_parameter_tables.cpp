@@ -22,13 +22,7 @@ namespace {
 // Every switch on (Johnson-Cook, TANH softening, Mie-Grueneisen, damage, a rate-dependent G_f): every
 // parameter in use.
 MaterialParameters everything_on() {
-  MaterialParameters m = testing::with_jc_damage(testing::ti64_johnson_1985());
-  m.flow_softening = FlowSoftening::Tanh;
-  m.tanh_a = 2.0;
-  m.tanh_b = 5.0;
-  m.tanh_c = 2.0;
-  m.tanh_d = 1.0;
-  m.tanh_s = 0.05;
+  MaterialParameters m = testing::with_jc_damage(testing::with_sima_ozel_softening(testing::ti64_johnson_1985()));
   m.eos = EquationOfState::MieGruneisen;
   m.mg_c0 = 5130.0;
   m.mg_s = 1.028;

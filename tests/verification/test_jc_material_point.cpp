@@ -255,10 +255,7 @@ TEST(JohnsonCookMaterialPoint, AdiabaticHeatingMatchesRK4) {
 // maximum and then falls (Johnson-Cook alone keeps hardening at these strains: the softening the
 // shear bands of titanium chips need).
 TEST(JohnsonCookMaterialPoint, TanhSofteningAdiabaticShearPeaksAndFalls) {
-  MaterialParameters m = ti64();
-  m.jc_A = 724.7e6, m.jc_B = 683.1e6, m.jc_n = 0.47, m.jc_C = 0.035, m.jc_m = 1.0;
-  m.flow_softening = FlowSoftening::Tanh;
-  m.tanh_a = 2.0, m.tanh_b = 5.0, m.tanh_c = 2.0, m.tanh_d = 1.0, m.tanh_s = 0.05;
+  const MaterialParameters m = mpmcut::testing::ti64_sima_ozel_2010();
   EXPECT_GT(expect_adiabatic_heating_matches_rk4(m, 4.0), 300.0);
   const JohnsonCookMaterial jc(m);
   MaterialPointDriver d(jc, 298.0, 5e-6);
