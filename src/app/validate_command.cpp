@@ -99,21 +99,63 @@ struct ValidateOptions {
   bool list = false;
   std::vector<double> h_mm, speeds_m_per_min;
   std::vector<std::string> condition_ids;
-  std::string material;         // a library set; empty: the default (ti64-cutting)
+  std::string material;         // a library set or one of material_file; empty: the default (ti64-cutting)
+  std::string material_file;    // --material-file: [[material]] sets that --material may name
   std::optional<double> friction;  // Coulomb coefficient; none: the default (0.35)
   std::optional<double> friction_heat_share;  // none: the preset's (all frictional heat into the workpiece)
   std::optional<double> tool_heat_transfer_coefficient, tool_temperature;  // none: an adiabatic tool
 };
+
+std::string join(const std::vector<std::string>& parts, const std::string& sep) {
+  std::string out;
+  for (const auto& p : parts) out += (out.empty() ? "" : sep) + p;
+  return out;
+}
+
+// The material of the runs: a library set, or a set of --material-file (read and checked here, so that a broken
+// file stops the study before any run, with its file, line and key).
+void choose_material(const ValidateOptions& o, ConditionRunSettings& s) {
+  if (o.material_file.empty()) {
+    if (o.material.empty()) return;
+    if (!builtin_material_library().find(o.material))
+      throw InputError(fmt::format("--material {}: no such set; the library has: {}", o.material,
+                                   join(builtin_material_library().names(), ", ")));
+    s.material = o.material;
+    s.material_note = "chosen with --material; docs/materials.md";
+    return;
+  }
+  std::ifstream in(o.material_file, std::ios::binary);
+  if (!in) throw InputError(fmt::format("--material-file {}: cannot read the file", o.material_file));
+  std::ostringstream text;
+  text << in.rdbuf();
+  {
+    MaterialLibrary with_builtin = builtin_material_library();
+    const std::size_t before = with_builtin.sets().size();
+    with_builtin.add_file(text.str(), o.material_file);  // InputError at the file's line and key
+    if (with_builtin.sets().size() == before)
+      throw InputError(fmt::format("--material-file {}: no [[material]] set in the file", o.material_file));
+    std::vector<std::string> names;
+    for (std::size_t i = before; i < with_builtin.sets().size(); ++i) names.push_back(with_builtin.sets()[i].name);
+    std::string name = o.material;
+    if (name.empty() && names.size() == 1) name = names.front();
+    if (name.empty())
+      throw InputError(fmt::format("--material-file {} has {} sets ({}): name one with --material", o.material_file,
+                                   names.size(), join(names, ", ")));
+    if (!with_builtin.find(name))
+      throw InputError(fmt::format("--material {}: no such set in {} ({}) or the library ({})", name, o.material_file,
+                                   join(names, ", "), join(builtin_material_library().names(), ", ")));
+    s.material = name;
+  }
+  s.material_definitions = text.str();
+  s.material_note = fmt::format("from --material-file {}", o.material_file);
+}
 
 ConditionRunSettings run_settings(const ValidateOptions& o) {
   ConditionRunSettings s;
   s.quick = o.quick;
   s.cells_per_feed = o.cells_per_feed;
   s.cells_per_edge_radius = o.cells_per_edge_radius;
-  if (!o.material.empty()) {
-    s.material = o.material;
-    s.material_note = "chosen with --material; docs/materials.md";
-  }
+  choose_material(o, s);
   if (o.friction) {
     s.friction = *o.friction;
     s.friction_note = "chosen with --friction";
@@ -134,12 +176,6 @@ std::string within(std::optional<double> sim, double lo, double hi) {
 }
 
 std::string g4(double x) { return std::isfinite(x) ? fmt::format("{:.4g}", x) : std::string(); }
-
-std::string join(const std::vector<std::string>& parts, const std::string& sep) {
-  std::string out;
-  for (const auto& p : parts) out += (out.empty() ? "" : sep) + p;
-  return out;
-}
 
 std::optional<double> melting_temperature(const fs::path& dir) {
   try {
@@ -686,7 +722,8 @@ int run_validation(const ValidateOptions& o) {
                             *settings.tool_heat_transfer_coefficient)
               : std::string("; the tool surface is adiabatic"))
       << ".\n"
-      << "- Material: the `" << settings.material << "` set of the material library ("
+      << "- Material: the `" << settings.material << "` set"
+      << (settings.material_definitions.empty() ? " of the material library" : "") << " ("
       << settings.material_note << ")"
       << (settings.material == "ti64-cutting"
               ? ": Johnson 1985 JC flow and JC damage initiation, G_f = 15 kJ/m² falling to 5 kJ/m² above a plastic "
@@ -801,11 +838,12 @@ void add_validate_command(CLI::App& app) {
   v->add_option("-t,--threads", o->threads, "OpenMP threads of each run (default: 1)")->check(CLI::Range(1, 1024));
   v->add_flag("--no-plots", o->no_plots, "Only the tables");
   v->add_option("--material", o->material,
-                "Material set of the library to run (default ti64-cutting; e.g. a calibrated set, docs/materials.md)")
-      ->check([](const std::string& name) -> std::string {
-        if (builtin_material_library().find(name)) return {};
-        return "unknown material set \"" + name + "\"; the library has: " + join(builtin_material_library().names(), ", ");
-      });
+                "Material set to run: a set of the library (default ti64-cutting; docs/materials.md) or of "
+                "--material-file");
+  v->add_option("--material-file", o->material_file,
+                "A TOML file of [[material]] sets (as materials/*.toml, or the best_material.toml of `mpmcut "
+                "calibrate`): --material may name one of them (a file of one set needs no --material); every case "
+                "file then carries the file's sets");
   v->add_option("--friction", o->friction, "Coulomb coefficient at the tool (default 0.35; e.g. a calibrated one)")
       ->check(CLI::Range(0.0, 2.0));
   // The tool's thermal options: bounded numbers that, when given, go into every case file.
@@ -833,6 +871,9 @@ void add_validate_command(CLI::App& app) {
     int code = 0;
     try {
       code = run_study([&] { return run_validation(*o); });
+    } catch (const InputError& e) {
+      std::cerr << "error: " << e.what() << "\n";
+      code = kExitInputError;
     } catch (const std::exception& e) {
       std::cerr << "error: " << e.what() << "\n";
       code = 4;

@@ -132,6 +132,12 @@ std::string condition_case_text(const CuttingCondition& c, const ConditionRunSet
   s += fmt::format("title = \"{} {}: V = {:g} m/s ({:g} m/min), h = {:g} mm\"\n", o.purpose, c.id, c.speed_m_per_s,
                    c.speed_m_per_s * 60.0, c.h_mm);
   std::string material = o.material;
+  if (!o.material_definitions.empty()) {
+    s += "\n# the material file given to the study (its [[material]] sets, as read):\n";
+    s += o.material_definitions;
+    if (s.back() != '\n') s += '\n';
+    s += "\n";
+  }
   if (!o.material_overrides.empty()) {
     // The trial set: the library set with the changed keys; each value written so that it reads back as exactly the
     // optimizer's value.

@@ -69,6 +69,9 @@ struct ConditionRunSettings {
   double cells_per_edge_radius = 4.0;
   std::string material = "ti64-cutting";  // a library set
   std::string material_note = "the calibrated set of the default case (materials/ti6al4v.toml)";
+  // [[material]] tables (TOML text, e.g. of a user's material file) written into every case before [cutting], so
+  // that `material` may name one of their sets and the case stays self-contained; empty: library sets only.
+  std::string material_definitions;
   // Material keys changed from `material` (a [[material]] table with library = material in the case).
   std::vector<std::pair<std::string, double>> material_overrides;
   double friction = 0.35;   // Coulomb coefficient at the tool

@@ -5,7 +5,9 @@ Checks:
 - `--list` names all 35 force rows and the 2 chip-type rows; the case file of the thin feed with a large edge
   (h = 0.01 mm, r_n = 39.8 um) has cell = t0/10 = 1 um, that of h = 0.2 mm (r_n = 38.8 um) r_n/4 = 9.7 um;
   --h / --speeds-m-per-min select (intersected); a value outside the matrix is an error naming the option;
-  --material and --friction reach the case files, an unknown set or a friction out of range exits 2.
+  --material and --friction reach the case files, an unknown set or a friction out of range exits 2; a
+  --material-file set reaches the case files with its [[material]] tables (the case reads on its own), a broken
+  file is reported at its line and key, two sets need --material.
 - Resumption: `--quick --conditions A,B`, then `--quick` (its 5 conditions, a superset): the logs of A and B say
   "kept:", the others do not; the report says 5 of 37 complete; a third part of one condition still reports all 5
   (4 of them as "earlier run").
@@ -215,8 +217,8 @@ def main(binary, scratch):
     if listed(validate(binary, "--list", "--h", "0.1,0.02", "--speeds-m-per-min", "100,400.1", "--out", lst)) != [
             "forces_h0.02mm_vc100mpmin", "forces_h0.02mm_vc400.1mpmin", "forces_h0.1mm_vc100mpmin"]:
         fail("--h and --speeds-m-per-min do not intersect")
-    bad = validate(binary, "--list", "--h", "0.07", "--out", lst, expect=None)
-    if bad.returncode == 0 or "--h 0.07" not in bad.stderr:
+    bad = validate(binary, "--list", "--h", "0.07", "--out", lst, expect=2)
+    if "--h 0.07" not in bad.stderr:
         fail("--h 0.07 (not in the matrix) must be an error naming the option")
 
     # Another material set and friction (e.g. a calibrated pair) reach every case file; bad ones are input errors.
@@ -232,6 +234,33 @@ def main(binary, scratch):
     if "ti64-cutting" not in bad.stderr:
         fail("an unknown --material must list the library's sets")
     validate(binary, "--list", "--friction", "3", "--out", other, expect=2)
+
+    # A material file (a calibration's best_material.toml, a user's set): its set reaches every case file, which
+    # carries the file's [[material]] tables and reads on its own; a broken file stops with its file, line and key.
+    sets = os.path.join(scratch, "sets.toml")
+    with open(sets, "w") as f:
+        f.write('[[material]]\nname = "my-ti64"\nlibrary = "ti64-seo-2005"\nfracture_energy = 15.0e3\n')
+    mine = os.path.join(scratch, "mine")
+    validate(binary, "--list", "--material-file", sets, "--conditions", "forces_h0.1mm_vc100mpmin", "--out", mine)
+    case = os.path.join(mine, "cases", "forces_h0.1mm_vc100mpmin.toml")
+    with open(case) as f:
+        text = f.read()
+    if 'material = "my-ti64"' not in text or 'name = "my-ti64"' not in text or 'library = "ti64-seo-2005"' not in text:
+        fail("--material-file: the file's set did not reach the case file:\n" + text[:800])
+    check = subprocess.run([binary, "run", case, "--check"], capture_output=True, text=True, timeout=120)
+    if check.returncode != 0:
+        fail(f"the case file written with --material-file does not read on its own: {check.stderr}")
+    with open(sets, "a") as f:
+        f.write('[[material]]\nname = "my-other"\nlibrary = "ti64-seo-2005"\njc_A = -1.0\n')
+    bad = validate(binary, "--list", "--material-file", sets, "--material", "my-ti64", "--out", mine, expect=2)
+    if "sets.toml:" not in bad.stderr or "jc_A" not in bad.stderr:
+        fail("a broken material file must be reported at its file, line and key")
+    with open(sets, "w") as f:
+        f.write('[[material]]\nname = "a"\nlibrary = "ti64-seo-2005"\n[[material]]\nname = "b"\nlibrary = "ti64-seo-2005"\n')
+    bad = validate(binary, "--list", "--material-file", sets, "--out", mine, expect=2)
+    if "--material" not in bad.stderr or "a, b" not in bad.stderr:
+        fail("a material file of two sets without --material must ask for one and name both")
+    validate(binary, "--list", "--material-file", os.path.join(scratch, "no-such-file.toml"), "--out", mine, expect=2)
 
     # Resumption: part one, then the quick set (a superset) keeps part one.
     out = os.path.join(scratch, "validation")
