@@ -128,24 +128,22 @@ void choose_material(const ValidateOptions& o, ConditionRunSettings& s) {
   if (!in) throw InputError(fmt::format("--material-file {}: cannot read the file", o.material_file));
   std::ostringstream text;
   text << in.rdbuf();
-  {
-    MaterialLibrary with_builtin = builtin_material_library();
-    const std::size_t before = with_builtin.sets().size();
-    with_builtin.add_file(text.str(), o.material_file);  // InputError at the file's line and key
-    if (with_builtin.sets().size() == before)
-      throw InputError(fmt::format("--material-file {}: no [[material]] set in the file", o.material_file));
-    std::vector<std::string> names;
-    for (std::size_t i = before; i < with_builtin.sets().size(); ++i) names.push_back(with_builtin.sets()[i].name);
-    std::string name = o.material;
-    if (name.empty() && names.size() == 1) name = names.front();
-    if (name.empty())
-      throw InputError(fmt::format("--material-file {} has {} sets ({}): name one with --material", o.material_file,
-                                   names.size(), join(names, ", ")));
-    if (!with_builtin.find(name))
-      throw InputError(fmt::format("--material {}: no such set in {} ({}) or the library ({})", name, o.material_file,
-                                   join(names, ", "), join(builtin_material_library().names(), ", ")));
-    s.material = name;
-  }
+  MaterialLibrary with_builtin = builtin_material_library();
+  const std::size_t before = with_builtin.sets().size();
+  with_builtin.add_file(text.str(), o.material_file);  // InputError at the file's line and key
+  if (with_builtin.sets().size() == before)
+    throw InputError(fmt::format("--material-file {}: no [[material]] set in the file", o.material_file));
+  std::vector<std::string> names;
+  for (std::size_t i = before; i < with_builtin.sets().size(); ++i) names.push_back(with_builtin.sets()[i].name);
+  std::string name = o.material;
+  if (name.empty() && names.size() == 1) name = names.front();
+  if (name.empty())
+    throw InputError(fmt::format("--material-file {} has {} sets ({}): name one with --material", o.material_file,
+                                 names.size(), join(names, ", ")));
+  if (!with_builtin.find(name))
+    throw InputError(fmt::format("--material {}: no such set in {} ({}) or the library ({})", name, o.material_file,
+                                 join(names, ", "), join(builtin_material_library().names(), ", ")));
+  s.material = name;
   s.material_definitions = text.str();
   s.material_note = fmt::format("from --material-file {}", o.material_file);
 }
