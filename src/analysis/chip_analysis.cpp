@@ -190,7 +190,8 @@ ChipAnalysis analyze_chip(const Particles& p, const ChipAnalysisSetup& s) {
                                    th.max_chip_thickness_t0 * t0, t0);
     a.profile.start_m = s0;
   }
-  a.segmentation = measure_segmentation(a.profile, a.prominence_m);
+  a.min_pitch_m = std::max(th.min_pitch_t0 * t0, th.min_pitch_cells * h);
+  a.segmentation = measure_segmentation(a.profile, a.prominence_m, a.min_pitch_m);
   if (a.segmentation.mean_thickness_m) {
     const double r = t0 / *a.segmentation.mean_thickness_m;
     a.chip_thickness_ratio = r;
@@ -364,6 +365,7 @@ nlohmann::json chip_json(const ChipAnalysis& a) {
   for (std::size_t k : g.extrema.peaks) j["profile"]["peak_positions_m"].push_back(a.profile.position_m(k));
   for (std::size_t k : g.extrema.valleys) j["profile"]["valley_positions_m"].push_back(a.profile.position_m(k));
   j["thresholds"] = {{"prominence_m", a.prominence_m},
+                     {"min_pitch_m", a.min_pitch_m},
                      {"significant_piece_particles", a.significant_piece_particles},
                      {"band_plastic_strain", optional_json(a.band_strain_threshold)}};
   j["definition"] = "docs/analysis.md";

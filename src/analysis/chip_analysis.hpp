@@ -32,6 +32,8 @@ struct ChipThresholds {
   double max_chip_thickness_t0 = 6.0;     // the profile looks this far across the chip
   double prominence_t0 = 0.1;              // peak/valley prominence, in t0 ...
   double prominence_spacings = 1.5;        // ... and at least this many d (one particle is not a tooth)
+  double min_pitch_t0 = 0.25;              // teeth closer than this many t0 along the chip are one tooth ...
+  double min_pitch_cells = 2.0;            // ... and closer than this many h (the grid cannot resolve them)
   double serrated_degree = 0.1;            // Gs at or above: serrated (one piece) ...
   std::size_t serrated_min_segments = 2;   // ... with at least this many teeth (a repeating pattern)
   // Reporting margin: a one-piece chip whose Gs lies within this of serrated_degree, or that is as deep
@@ -101,6 +103,7 @@ struct ChipAnalysis {
   ChipProfile profile;
   Segmentation segmentation;
   double prominence_m = 0.0;
+  double min_pitch_m = 0.0;                          // neighbouring teeth closer than this are merged
   std::optional<double> chip_thickness_ratio;        // r = t0 / t_c, t_c = mean profile thickness
   std::optional<double> shear_angle_from_ratio_deg;  // tan phi = r cos a / (1 - r sin a)
   std::optional<double> chip_velocity_m_per_s;       // V r (continuity)

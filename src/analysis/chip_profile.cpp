@@ -172,7 +172,45 @@ ProfileExtrema find_profile_extrema(const std::vector<double>& y, double promine
   return out;
 }
 
-Segmentation measure_segmentation(const ChipProfile& profile, double prominence) {
+void merge_close_extrema(const std::vector<double>& y, ProfileExtrema& extrema, std::size_t min_spacing) {
+  struct Extremum {
+    std::size_t index;
+    bool peak;
+  };
+  std::vector<Extremum> seq;
+  for (std::size_t k : extrema.peaks) seq.push_back({k, true});
+  for (std::size_t k : extrema.valleys) seq.push_back({k, false});
+  std::sort(seq.begin(), seq.end(), [](const Extremum& a, const Extremum& b) { return a.index < b.index; });
+  for (;;) {
+    // Of the neighbours of one kind closer than min_spacing (seq[j], seq[j + 2]; they alternate),
+    // merge first the pair whose merge removes the smallest excursion: the depth of the notch between
+    // two peaks below the lower one, or the height of the spike between two valleys above the higher
+    // one. A flicker is then removed and the tooth's true crest and valley are kept.
+    std::size_t chosen = seq.size();
+    double smallest = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 0; j + 2 < seq.size(); ++j) {
+      if (seq[j + 2].index - seq[j].index >= min_spacing) continue;
+      const double a = y[seq[j].index], mid = y[seq[j + 1].index], b = y[seq[j + 2].index];
+      const double excursion = seq[j].peak ? std::min(a, b) - mid : mid - std::max(a, b);
+      if (excursion < smallest) {
+        smallest = excursion;
+        chosen = j;
+      }
+    }
+    if (chosen == seq.size()) break;
+    const Extremum& a = seq[chosen];
+    const Extremum& b = seq[chosen + 2];
+    // Keep the more extreme of the two: the higher peak, the lower valley.
+    const bool keep_first = a.peak ? y[a.index] >= y[b.index] : y[a.index] <= y[b.index];
+    seq.erase(seq.begin() + static_cast<std::ptrdiff_t>(chosen + 1));  // the extremum between them
+    seq.erase(seq.begin() + static_cast<std::ptrdiff_t>(keep_first ? chosen + 1 : chosen));
+  }
+  extrema.peaks.clear();
+  extrema.valleys.clear();
+  for (const Extremum& e : seq) (e.peak ? extrema.peaks : extrema.valleys).push_back(e.index);
+}
+
+Segmentation measure_segmentation(const ChipProfile& profile, double prominence, double min_pitch) {
   Segmentation s;
   const std::vector<double>& t = profile.thickness_m;
   double sum = 0.0, max = 0.0;
@@ -189,6 +227,8 @@ Segmentation measure_segmentation(const ChipProfile& profile, double prominence)
   s.max_thickness_m = max;
 
   s.extrema = find_profile_extrema(t, prominence);
+  if (min_pitch > 0.0 && profile.spacing_m > 0.0)
+    merge_close_extrema(t, s.extrema, static_cast<std::size_t>(std::ceil(min_pitch / profile.spacing_m - 1e-9)));
   const auto mean_at = [&t](const std::vector<std::size_t>& idx) {
     double m = 0.0;
     for (std::size_t k : idx) m += t[k];

@@ -52,6 +52,16 @@ struct ProfileExtrema {
 };
 ProfileExtrema find_profile_extrema(const std::vector<double>& y, double prominence);
 
+// Teeth narrower than `min_spacing` samples are flicker, not segments: on a fine particle cloud the
+// cross-section at a tooth's crest or at a crack can jump by more than the prominence from one
+// station to the next, and the zig-zag then reports a peak-valley-peak within a few samples.
+// Wherever two consecutive peaks (or valleys) lie closer than min_spacing, the lower peak (the
+// higher valley) and the extremum between them are dropped, the pair whose merge removes the
+// smallest excursion first (so a flicker goes, not the tooth's real crest or valley), until every
+// pair of neighbours of one kind is at least min_spacing apart. Peaks and valleys still alternate
+// and every remaining extremum still differs from its neighbours by at least the prominence.
+void merge_close_extrema(const std::vector<double>& y, ProfileExtrema& extrema, std::size_t min_spacing);
+
 struct Segmentation {
   ProfileExtrema extrema;
   std::size_t segments = 0;                // number of peaks; 0 without a peak and valley pair
@@ -64,7 +74,8 @@ struct Segmentation {
   std::optional<double> degree;
   std::optional<double> pitch_m;           // mean distance between consecutive peaks (>= 2 peaks)
 };
-// Empty profile: every optional empty.
-Segmentation measure_segmentation(const ChipProfile& profile, double prominence);
+// Extrema by prominence (find_profile_extrema), then teeth closer than min_pitch (m) along the chip
+// merged (merge_close_extrema; 0 keeps them all). Empty profile: every optional empty.
+Segmentation measure_segmentation(const ChipProfile& profile, double prominence, double min_pitch = 0.0);
 
 }  // namespace mpmcut

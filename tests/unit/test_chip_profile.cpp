@@ -3,7 +3,9 @@
 // and the walk along a chip (trace_chip_profile) on particle sets of known thickness.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 #include <numbers>
 
 #include "analysis/chip_profile.hpp"
@@ -65,6 +67,69 @@ TEST(ChipProfile, OneParticleNoiseIsNotASegment) {
   EXPECT_EQ(*s.degree, 0.0);
   EXPECT_NEAR(*s.mean_thickness_m, 100e-6, 1e-12);
   EXPECT_FALSE(s.pitch_m.has_value());
+}
+
+// A saw-tooth whose crests and valleys flicker: where the cross-section jumps between including a
+// tooth's tip or not, the thickness drops by more than the prominence for one sample and comes back
+// (what the walk gives on fine particle clouds). The zig-zag alone counts every flicker as a tooth;
+// merging teeth closer than the minimum pitch recovers the five teeth, their heights and their pitch.
+std::vector<double> flickering_sawtooth(double h, double H, int period, int teeth, double flicker) {
+  std::vector<double> y = sawtooth(h, H, period, teeth);
+  for (int tooth = 0; tooth < teeth; ++tooth) {
+    y[tooth * period + period - 3] -= flicker;          // a notch just below the crest
+    if (tooth > 0) y[tooth * period + 2] += flicker;    // a spike just after the valley
+  }
+  return y;
+}
+
+TEST(ChipProfile, FlickerAtCrestsAndValleysIsMergedIntoItsTooth) {
+  const double spacing = 2e-6, h = 30e-6, H = 110e-6, prominence = 10e-6;
+  const int period = 40;  // pitch 80 um
+  const ChipProfile p = profile_of(flickering_sawtooth(h, H, period, 5, 30e-6), spacing);
+
+  const Segmentation raw = measure_segmentation(p, prominence);
+  ASSERT_GT(raw.segments, 5u);  // without merging, the flicker counts: the test would catch its loss
+
+  const double min_pitch = 25e-6;  // 0.25 t0 at t0 = 0.1 mm
+  const Segmentation s = measure_segmentation(p, prominence, min_pitch);
+  EXPECT_EQ(s.segments, 5u);
+  EXPECT_EQ(s.extrema.peaks, (std::vector<std::size_t>{39, 79, 119, 159, 199}));
+  EXPECT_EQ(s.extrema.valleys, (std::vector<std::size_t>{40, 80, 120, 160}));
+  EXPECT_DOUBLE_EQ(*s.peak_height_m, H);
+  EXPECT_DOUBLE_EQ(*s.valley_height_m, h);
+  EXPECT_DOUBLE_EQ(*s.pitch_m, period * spacing);
+  EXPECT_DOUBLE_EQ(*s.degree, (H - h) / H);
+}
+
+TEST(ChipProfile, TeethAtTheMinimumPitchAreKept) {
+  // Real teeth exactly min_pitch apart are not merged; half a sample closer, they are.
+  const double spacing = 2e-6;
+  const ChipProfile p = profile_of(sawtooth(30e-6, 110e-6, 10, 6), spacing);  // pitch 20 um
+  EXPECT_EQ(measure_segmentation(p, 10e-6, 20e-6).segments, 6u);
+  EXPECT_NEAR(*measure_segmentation(p, 10e-6, 20e-6).pitch_m, 20e-6, 1e-18);
+  EXPECT_LT(measure_segmentation(p, 10e-6, 21e-6).segments, 6u);
+}
+
+TEST(ChipProfile, MergingKeepsAlternationAndProminence) {
+  // Random-looking profile: after merging, peaks and valleys alternate, neighbours of one kind are
+  // min_spacing apart, and each extremum differs from its neighbours by at least the prominence.
+  std::vector<double> y;
+  for (int k = 0; k < 400; ++k)
+    y.push_back(60e-6 + 25e-6 * std::sin(0.13 * k) + 18e-6 * std::sin(1.7 * k + 0.3) + 9e-6 * std::sin(4.1 * k));
+  const double prominence = 10e-6;
+  ProfileExtrema e = find_profile_extrema(y, prominence);
+  ASSERT_GT(e.peaks.size(), 30u);
+  merge_close_extrema(y, e, 12);
+  std::vector<std::pair<std::size_t, bool>> seq;
+  for (std::size_t k : e.peaks) seq.emplace_back(k, true);
+  for (std::size_t k : e.valleys) seq.emplace_back(k, false);
+  std::sort(seq.begin(), seq.end());
+  ASSERT_GE(seq.size(), 4u);
+  for (std::size_t j = 0; j + 1 < seq.size(); ++j) {
+    EXPECT_NE(seq[j].second, seq[j + 1].second) << "at " << seq[j].first;
+    EXPECT_GE(std::abs(y[seq[j].first] - y[seq[j + 1].first]), prominence) << "at " << seq[j].first;
+    if (j + 2 < seq.size()) EXPECT_GE(seq[j + 2].first - seq[j].first, 12u) << "at " << seq[j].first;
+  }
 }
 
 TEST(ChipProfile, EmptyProfileHasNoMetrics) {
