@@ -8,9 +8,10 @@ Checks:
   --material and --friction reach the case files, an unknown set or a friction out of range exits 2; a
   --material-file set reaches the case files with its [[material]] tables (the case reads on its own), a broken
   file is reported at its line and key, two sets need --material.
-- Resumption: `--quick --conditions A,B`, then `--quick` (its 5 conditions, a superset): the logs of A and B say
-  "kept:", the others do not; the report says 5 of 37 complete; a third part of one condition still reports all 5
-  (4 of them as "earlier run").
+- Resumption: `--quick --conditions A,B`, then `--quick` (its 5 conditions, a superset): A and B are not launched
+  again (their logs unchanged, origin "earlier run"), the other 3 run; the report says 5 of 37 complete, 3 of 35
+  force and 2 of 2 chip-type conditions, 3 run by this invocation; a third part of one of them runs nothing and
+  reports all 5 as "earlier run".
 - Run records (--records): a part writes scene.toml, forces.csv and summary.json of each complete condition to
   the records; a new --out with the same records reports them as "record" without running them (no log) and with
   the same forces; a record of another scene (another friction) is not used.
@@ -266,29 +267,41 @@ def main(binary, scratch):
     out = os.path.join(scratch, "validation")
     part = ["forces_h0.04mm_vc100mpmin", "forces_h0.1mm_vc100mpmin"]
     validate(binary, "--quick", "--jobs", "2", "--no-plots", "--conditions", ",".join(part), "--out", out)
+    logs_of_part = {}
+    for name in part:
+        with open(os.path.join(out, "logs", name + ".log")) as f:
+            logs_of_part[name] = f.read()
     validate(binary, "--quick", "--jobs", "2", "--out", out)
-    for name in os.listdir(os.path.join(out, "logs")):
-        with open(os.path.join(out, "logs", name)) as f:
-            kept = "kept:" in f.read()
-        if kept != (name[:-4] in part):
-            fail(f"log {name}: 'kept:' {'found' if kept else 'missing'}")
+    # Part one's conditions are not launched again (their logs stay those of part one), the others run.
+    for name in part:
+        with open(os.path.join(out, "logs", name + ".log")) as f:
+            if f.read() != logs_of_part[name]:
+                fail(f"{name}, complete from part one, was launched again")
+    origins = {r["condition"]: r["origin"] for r in read_csv(os.path.join(out, "validation_runs.csv"))}
+    if {k for k, v in origins.items() if v == "earlier run"} != set(part) or \
+            sum(v == "this run" for v in origins.values()) != 3:
+        fail(f"origins after the superset part: {origins}")
     with open(os.path.join(out, "validation.md")) as f:
         md = f.read()
     if "5 of the 37 conditions of the matrix are complete" not in md:
         fail("validation.md does not say 5 of 37 complete")
+    for text in ("3 of 35 force conditions and 2 of 2 chip-type conditions", "3 run by this invocation",
+                 "2 complete from an earlier run"):
+        if text not in md:
+            fail(f"validation.md does not say '{text}'")
     for text in ("b = 1 mm", "--quick", "Klippel", "Sutter", "## Goals", "## Not run yet", "## By condition"):
         if text not in md:
             fail(f"validation.md does not mention '{text}'")
 
-    # A later part that runs one condition still reports the others, complete from the earlier runs.
+    # A later part that selects one condition, complete already, runs nothing and still reports all five.
     validate(binary, "--quick", "--no-plots", "--conditions", "forces_h0.04mm_vc400.1mpmin", "--out", out)
     origins = {r["condition"]: r["origin"] for r in read_csv(os.path.join(out, "validation_runs.csv"))}
-    if len(origins) != 5 or origins.pop("forces_h0.04mm_vc400.1mpmin") != "this run" or \
-            set(origins.values()) != {"earlier run"}:
+    if len(origins) != 5 or set(origins.values()) != {"earlier run"}:
         fail(f"origins after a one-condition part: {origins}")
     with open(os.path.join(out, "validation.md")) as f:
-        if "5 of the 37 conditions of the matrix are complete" not in f.read():
-            fail("a one-condition part does not report the 5 complete conditions")
+        md = f.read()
+    if "5 of the 37 conditions of the matrix are complete" not in md or "0 run by this invocation" not in md:
+        fail("a one-condition part of a complete condition does not report the 5 complete conditions, 0 run")
 
     check_records(binary, scratch, out)
     check_source_revision(out)
