@@ -44,9 +44,11 @@ struct RunCost {
 RunCost estimate_run_cost(const Scene& scene);
 
 // Core-seconds per particle-step of a cutting run (Johnson-Cook, damage, heating, uGIMP, MUSL, one thread),
-// for turning particle-steps into core-hours: 0.54 us measured on the condition h = 0.04 mm, 400.1 m/min at
-// t0/5 (4800 particles, 24939 steps, 65 s on one shared core; the estimate said 24100 steps), rounded up
-// for the grid and cache costs of larger runs. An order of magnitude, not a benchmark.
-inline constexpr double kCoreSecondsPerParticleStep = 0.6e-6;
+// for turning particle-steps into core-hours. Measured on 17 complete matrix runs (docs/results/validation_matrix
+// and validation_speed_ends records, t0/10, 1.8e4-1e5 particles, two runs at a time on 2 cores): 0.22-0.26 us
+// on a core of its own, up to 0.45 us on a shared one; their steps were 6-23 % more than the first step's
+// stable time step predicts (the time step shrinks as the chip heats). 0.35 us covers both. An order of
+// magnitude, not a benchmark.
+inline constexpr double kCoreSecondsPerParticleStep = 0.35e-6;
 
 }  // namespace mpmcut
