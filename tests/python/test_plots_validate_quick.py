@@ -114,24 +114,33 @@ def check_arithmetic(out):
             if abs(float(row[col]) - value) > 0.15:
                 fail(f"errors {q} {col}: report {row[col]}, recomputed {value:.2f}")
     # Trends: slope of Fc over ln v at each h with >= 2 complete speeds, measured over the same speeds.
-    trends = {float(r["h_mm"]): r for r in read_csv(os.path.join(out, "validation_trends.csv"))}
+    # Rows "all" (the goal's) and, where a test of status "short" is among the speeds, "status ok only".
+    trends = {(float(r["h_mm"]), r["tests"]): r for r in read_csv(os.path.join(out, "validation_trends.csv"))}
     right = total = 0
     for h in sorted({k[0] for k in sim}):
-        vs = sorted(v for (hh, v) in sim if hh == h)
-        if len(vs) < 2:
-            continue
-        x = [math.log(v) for v in vs]
-        sm = slope(x, [float(meas[(h, v)]["Fc_mean_N"]) for v in vs])
-        ss = slope(x, [sim[(h, v)] for v in vs])
-        row = trends.get(h) or fail(f"no trend row for h = {h}")
-        for col, value in (("measured_slope_N_per_mm", sm), ("simulated_slope_N_per_mm", ss)):
-            if abs(float(row[col]) - value) > 0.01 * abs(value) + 0.02:
-                fail(f"trend h = {h} {col}: report {row[col]}, recomputed {value:.4g}")
-        ok = (sm > 0) == (ss > 0)
-        if row["sign_right"] != ("yes" if ok else "no"):
-            fail(f"trend h = {h}: sign_right {row['sign_right']}, recomputed {ok}")
-        right += ok
-        total += 1
+        all_vs = sorted(v for (hh, v) in sim if hh == h)
+        ok_vs = [v for v in all_vs if meas[(h, v)]["status"] == "ok"]
+        for tests, vs in (("all", all_vs), ("status ok only", ok_vs if ok_vs != all_vs else [])):
+            if len(vs) < 2:
+                if (h, tests) in trends:
+                    fail(f"trend row h = {h} ({tests}) over fewer than two speeds")
+                continue
+            x = [math.log(v) for v in vs]
+            fm = [float(meas[(h, v)]["Fc_mean_N"]) for v in vs]
+            fs = [sim[(h, v)] for v in vs]
+            sm, ss = slope(x, fm), slope(x, fs)
+            row = trends.get((h, tests)) or fail(f"no trend row for h = {h} ({tests})")
+            for col, value in (("measured_slope_N_per_mm", sm), ("simulated_slope_N_per_mm", ss),
+                               ("measured_slope_percent", 100 * sm / (sum(fm) / len(fm))),
+                               ("simulated_slope_percent", 100 * ss / (sum(fs) / len(fs)))):
+                if abs(float(row[col]) - value) > 0.01 * abs(value) + 0.02:
+                    fail(f"trend h = {h} ({tests}) {col}: report {row[col]}, recomputed {value:.4g}")
+            ok = (sm > 0) == (ss > 0)
+            if row["sign_right"] != ("yes" if ok else "no"):
+                fail(f"trend h = {h} ({tests}): sign_right {row['sign_right']}, recomputed {ok}")
+            if tests == "all":
+                right += ok
+                total += 1
     if total == 0:
         fail("the quick set should give one speed trend (h = 0.04 mm at 100 and 400.1 m/min)")
     goals = read_csv(os.path.join(out, "validation_goals.csv"))
