@@ -481,7 +481,9 @@ int run_validation(const ValidateOptions& o) {
   TextTable runs_table;
   runs_table.columns = {"condition", "kind", "speed_m_per_s", "speed_m_per_min", "h_mm", "edge_radius_um",
                         "measured_status", "origin", "status", "cutting_force_N_per_mm", "thrust_force_N_per_mm",
-                        "force_window", "Fc_drift_in_window_percent", "Ft_drift_in_window_percent", "chip_thickness_ratio", "chip_thickness_um", "cell_size_um", "mass_scaling_factor",
+                        "force_window", "Fc_drift_in_window_percent", "Ft_drift_in_window_percent",
+                        "rake_normal_force_N_per_mm", "rake_friction_force_N_per_mm", "edge_flank_cutting_force_N_per_mm",
+                        "edge_flank_thrust_force_N_per_mm", "chip_thickness_ratio", "chip_thickness_um", "cell_size_um", "mass_scaling_factor",
                         "max_temperature_K", "chip_classification", "wall_time_s", "source_revision", "result_dir", "message"};
   for (const Condition& c : conditions) {
     if (c.origin.empty()) continue;
@@ -491,6 +493,10 @@ int run_validation(const ValidateOptions& o) {
                                format_number(c.fc()), format_number(c.ft()), c.result.force_basis,
                                format_number(c.result.cutting_force_drift_percent, 2),
                                format_number(c.result.thrust_force_drift_percent, 2),
+                               format_number(c.result.tool_force_split.rake_normal_N_per_mm),
+                               format_number(c.result.tool_force_split.rake_friction_N_per_mm),
+                               format_number(c.result.tool_force_split.edge_flank_cutting_N_per_mm),
+                               format_number(c.result.tool_force_split.edge_flank_thrust_N_per_mm),
                                format_number(c.result.chip_thickness_ratio), format_number(c.chip_thickness_um()),
                                format_number(c.result.cell_size_um), format_number(c.result.mass_scaling_factor),
                                format_number(c.result.max_temperature_K), c.result.chip_classification,

@@ -208,6 +208,14 @@ void CuttingForcesObserver::at_finish(const Simulation& sim, nlohmann::json& sum
            "their ratio, which is the friction coefficient where the chip slides. Contact length: time mean of the "
            "largest distance from the tool tip, along the rake face, of a contact node (its material position) or "
            "safeguarded particle at which the contact pushed the material away from the tool"}};
+      // The rest of the tool force is carried by the edge arc and the flank (clearance face).
+      const Vec2 rake_force = rake_face_force_on_tool(r.normal / r.time, r.friction / r.time, c_.rake_angle_deg);
+      summary["edge_and_flank"] = {
+          {"cutting_force_N_per_mm", (mean.x() - rake_force.x()) * kPerMm},
+          {"thrust_force_N_per_mm", (mean.y() - rake_force.y()) * kPerMm},
+          {"definition",
+           "steady-window mean tool force less the flat rake face's normal and friction force (rake_face), in the "
+           "cutting and thrust directions: what the edge arc and the flank carry"}};
     }
     summary["steady_window"] = {{"start_time_s", steady_start_time_},
                                 {"end_time_s", sim.time()},

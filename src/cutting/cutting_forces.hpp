@@ -1,6 +1,7 @@
 #pragma once
 // Cutting and thrust forces from the tool's contact impulses: forces.csv during the run and
 // the steady-state means in summary.json.
+#include <cmath>
 #include <filesystem>
 #include <optional>
 
@@ -13,6 +14,15 @@ namespace mpmcut {
 
 // A steady window whose two halves' mean forces differ by more than this gets a warning.
 inline constexpr double kSteadyDriftWarningPercent = 10.0;
+
+// The flat rake face's force on the tool in the (cutting, thrust) directions, from its normal force
+// (pushing the tool along the face's inward normal) and its friction force (positive up the face), for a
+// rake angle in degrees (the face of cutting/tool_geometry.cpp). The tool force less this is what the
+// edge arc and the flank carry (summary.json edge_and_flank).
+inline Vec2 rake_face_force_on_tool(double normal, double friction, double rake_angle_deg) {
+  const double a = rake_angle_deg * 3.14159265358979323846 / 180.0;
+  return normal * Vec2(std::cos(a), -std::sin(a)) + friction * Vec2(std::sin(a), std::cos(a));
+}
 
 // Sign conventions: the tool moves along -x. The cutting force F_c is the force along the
 // cutting velocity needed to push the tool (= x component of the material's force on the

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "cutting/cutting_forces.hpp"
 #include "cutting/cutting_resolution.hpp"
 #include "run/mass_scaling_report.hpp"
 #include "solver/simulation.hpp"
@@ -238,6 +239,20 @@ ChipHeadline chip_headline(const RunSummary& s) {
 }
 
 std::optional<double> mass_scaling_factor(const RunSummary& s) { return section_number(s.sections, "mass_scaling", "factor"); }
+
+ToolForceSplit tool_force_split(const RunSummary& s) {
+  ToolForceSplit t;
+  t.rake_normal_N_per_mm = section_number(s.sections, "rake_face", "normal_force_N_per_mm");
+  t.rake_friction_N_per_mm = section_number(s.sections, "rake_face", "friction_force_N_per_mm");
+  const std::optional<double> rake_angle = section_number(s.sections, "cutting", "rake_angle_deg");
+  if (t.rake_normal_N_per_mm && t.rake_friction_N_per_mm && rake_angle && s.mean_cutting_force_N_per_mm &&
+      s.mean_thrust_force_N_per_mm) {
+    const Vec2 rake = rake_face_force_on_tool(*t.rake_normal_N_per_mm, *t.rake_friction_N_per_mm, *rake_angle);
+    t.edge_flank_cutting_N_per_mm = *s.mean_cutting_force_N_per_mm - rake.x();
+    t.edge_flank_thrust_N_per_mm = *s.mean_thrust_force_N_per_mm - rake.y();
+  }
+  return t;
+}
 
 std::optional<double> steady_drift_percent(const RunSummary& s, const char* force) {
   if (!s.sections.contains("steady_window") || !s.sections["steady_window"].is_object()) return std::nullopt;

@@ -83,6 +83,15 @@ struct ChipHeadline {
 };
 ChipHeadline chip_headline(const RunSummary& s);
 std::optional<double> mass_scaling_factor(const RunSummary& s);
+// The steady-window tool force split into the flat rake face's part (rake_face: normal and friction force)
+// and the rest, carried by the edge arc and the flank, in the cutting and thrust directions; N/mm. From
+// rake_face, cutting.rake_angle_deg and the mean forces, so that summaries written before edge_and_flank
+// give it too. None where a part is missing.
+struct ToolForceSplit {
+  std::optional<double> rake_normal_N_per_mm, rake_friction_N_per_mm;
+  std::optional<double> edge_flank_cutting_N_per_mm, edge_flank_thrust_N_per_mm;
+};
+ToolForceSplit tool_force_split(const RunSummary& s);
 // steady_window.drift: the second half's mean force minus the first half's, % of the mean (Fc, Ft).
 std::optional<double> steady_drift_percent(const RunSummary& s, const char* force /* "cutting" | "thrust" */);
 

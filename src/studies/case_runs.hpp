@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "run/run_summary.hpp"
+
 namespace mpmcut {
 
 // One child run: `mpmcut <args...>`, stdout and stderr into log_file.
@@ -45,6 +47,7 @@ struct CaseResult {
   std::optional<double> chip_thickness_ratio;  // r = t0 / t_c from the chip analysis
   std::optional<double> wall_time_s;
   std::optional<double> cell_size_um, mass_scaling_factor;
+  ToolForceSplit tool_force_split;  // rake face (normal, friction) and the rest, edge arc + flank (N/mm)
   // Energy ledger at the end (summary.json energy_J_per_m): the tool's work and where it went; the
   // numerical part is the rest: FLIP/PIC transfer dissipation, removed particles, the contact safeguard, the residual.
   std::optional<double> tool_work_J_per_m, plastic_work_J_per_m, damage_J_per_m, friction_J_per_m,

@@ -11,6 +11,9 @@ A tiny coarse cut (25 um cells, 1 particle per cell, 0.1 mm of travel) at mu = 0
 - at mu = 0 the rake-face friction force is zero (to round-off);
 - forces.csv has the contact length and rake-force columns, and their time mean over the steady window
   agrees with summary.json (rows are time means between rows, the steady window starts on a row here);
+- edge_and_flank (the tool force less the rake face's): at mu = 0 it pushes the tool forward and up (the edge and
+  flank feel only the material's normal push from ahead and below); at rake 0 rake normal + its Fc is the whole
+  Fc and rake friction + its Ft the whole Ft;
 - steady_window.drift (second half's mean force minus the first half's, % of the mean) agrees with the same
   difference computed from the rows of forces.csv (a sign or definition error would differ by its size).
 """
@@ -99,6 +102,22 @@ def main(binary, scratch):
     # Zero up to round-off of the impulse's component along the face (1e-9 of the normal force).
     if abs(summary0["rake_face"]["friction_force_N_per_mm"]) > 1e-9 * summary0["rake_face"]["normal_force_N_per_mm"]:
         fail(f"mu = 0 but rake friction {summary0['rake_face']['friction_force_N_per_mm']} N/mm")
+    # The edge arc and the flank carry the rest of the tool force. Without friction the tool there only feels
+    # the material's normal push, from ahead of and below the tool: both components >= 0; and the rake face
+    # (rake 0: its normal force is along the cutting direction, no friction) plus the rest is the whole force.
+    rest = summary0["edge_and_flank"]
+    print(f"mu = 0: edge and flank carry Fc {rest['cutting_force_N_per_mm']:.2f}, Ft {rest['thrust_force_N_per_mm']:.2f} "
+          f"N/mm of {summary0['mean_cutting_force_N_per_mm']:.2f}, {summary0['mean_thrust_force_N_per_mm']:.2f}")
+    if rest["cutting_force_N_per_mm"] < 0 or rest["thrust_force_N_per_mm"] <= 0:
+        fail(f"mu = 0: edge and flank forces {rest} must push the tool forward and up")
+    total = rest["cutting_force_N_per_mm"] + summary0["rake_face"]["normal_force_N_per_mm"]
+    if abs(total - summary0["mean_cutting_force_N_per_mm"]) > 1e-9 * abs(total):
+        fail(f"mu = 0, rake 0: rake normal + edge and flank {total} != Fc {summary0['mean_cutting_force_N_per_mm']}")
+    # With friction at rake 0 the rake face's friction is a thrust: Ft = F + the rest's thrust.
+    rest = summary["edge_and_flank"]
+    total = rest["thrust_force_N_per_mm"] + summary["rake_face"]["friction_force_N_per_mm"]
+    if abs(total - summary["mean_thrust_force_N_per_mm"]) > 1e-9 * abs(total):
+        fail(f"rake 0: rake friction + edge and flank thrust {total} != Ft {summary['mean_thrust_force_N_per_mm']}")
     print("OK")
 
 

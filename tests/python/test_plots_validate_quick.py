@@ -19,6 +19,8 @@ Checks:
   validation.md show it.
 - The report's arithmetic: validation_errors.csv, validation_goals.csv and validation_trends.csv recomputed here
   from validation_runs.csv and the data file (errors, worst, slope of Fc over ln v, signs, goals met).
+- validation_runs.csv splits each force into the rake face's part and the edge and flank's (they add up to Fc and
+  Ft; the edge and flank's thrust is positive).
 - validation.csv has Fc/Ft/Ft/Fc/t_c rows with the measured means; chip-type rows; validation.md states b = 1 mm,
   the --quick caveat and its sources; the five plots are non-trivial PNGs.
 """
@@ -86,6 +88,13 @@ def check_arithmetic(out):
         m = meas[(h, v)]
         fc, ft = float(r["cutting_force_N_per_mm"]), float(r["thrust_force_N_per_mm"])
         sim[(h, v)] = fc
+        # The tool force split (rake 0: the rake face's normal force is a cutting force, its friction a thrust;
+        # the edge arc and flank carry the rest, pushing the tool forward and up).
+        split = [float(r[k]) for k in ("rake_normal_force_N_per_mm", "rake_friction_force_N_per_mm",
+                                       "edge_flank_cutting_force_N_per_mm", "edge_flank_thrust_force_N_per_mm")]
+        if abs(split[0] + split[2] - fc) > 1e-3 * abs(fc) or abs(split[1] + split[3] - ft) > 1e-3 * abs(fc) or \
+                split[3] <= 0:
+            fail(f"{r['condition']}: rake {split[:2]} + edge/flank {split[2:]} != (Fc, Ft) = ({fc}, {ft})")
         err["Fc"].append(abs(fc / float(m["Fc_mean_N"]) - 1))
         err["Ft"].append(abs(ft / float(m["Ff_mean_N"]) - 1))
         err["Ft/Fc"].append(abs((ft / fc) / (float(m["Ff_mean_N"]) / float(m["Fc_mean_N"])) - 1))
