@@ -417,6 +417,7 @@ int run_validation(const ValidateOptions& o) {
     try {
       if (existing_run(out / c.id, condition_case(c, case_file)) == ExistingRun::Complete) {
         c.selected = false;
+        c.origin = "earlier run";
         continue;
       }
     } catch (const std::exception&) {
@@ -455,7 +456,7 @@ int run_validation(const ValidateOptions& o) {
   // ends in one report.
   for (Condition& c : conditions) {
     if (c.selected) continue;
-    if (c.origin != "record") {
+    if (c.origin.empty()) {  // neither a record nor found complete before the launch: look now
       try {
         if (existing_run(out / c.id, condition_case(c, out / "cases" / (c.id + ".toml"))) != ExistingRun::Complete)
           continue;
