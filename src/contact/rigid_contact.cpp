@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "contact/penalty_law.hpp"
 #include "core/stencil.hpp"
 
 namespace mpmcut {
@@ -122,6 +123,56 @@ void RigidContact::compute_node_gaps(const Particles& P, const Grid& G, std::spa
   }
 }
 
+// Penalty contact: each particle feels its own contact force, from its own overlap and slip, so the
+// tool force follows the material continuously as the tool crosses the grid. The force enters the
+// momentum update as an external nodal force (sum over particles of S_ip f_p). Energy: the body's
+// work is f . v_body dt; the sliding part of the slip dissipates mu f_n per unit length (frictional
+// work, heat); the rest goes into the springs' energy, f^2 / (2 k), a fraction of a per mille of the
+// tool's work in a cut. A particle keeps one friction history (contact_friction_force): that of the
+// first body in the scene's order it touches; touching another body in the same step, it starts
+// afresh there.
+void RigidContact::apply_penalty(Particles& P, Grid& G, std::span<const ShapeFunction> body_shapes,
+                                 double inertia_factor, double dt, std::vector<RigidBodyState>& bodies,
+                                 EnergyTotals& energy) {
+  touched_.assign(P.size(), 0);
+  for (std::size_t r = 0; r < geometry_.size(); ++r) {
+    const Vec2 shift = bodies[r].displacement;
+    const Vec2 vr = bodies[r].velocity;
+    const double mu = friction_[r];
+    Vec2 impulse = Vec2::Zero();
+    double friction_work = 0.0;
+    // Particles in index order: deterministic sums.
+    for_each_particle_near(P, G, body_shapes, geometry_[r], shift,
+                           [&](std::size_t p, const Vec2& x, const ShapeFunction& shape, double d, const Vec2& normal) {
+      const double overlap = shape.half_width() - d;
+      if (overlap <= 0.0) return;
+      const bool first = !touched_[p];
+      touched_[p] = 1;
+      const double m = inertia_factor * P.mass[p];
+      const PenaltyContactForce c =
+          penalty_contact_force(overlap, P.velocity[p] - vr, normal, m, dt, settings_.penalty_stiffness, mu,
+                                first ? P.contact_friction_force[p] : Vec2::Zero());
+      if (first) P.contact_friction_force[p] = c.friction_force;
+      const Vec2 dp = dt * c.force;  // momentum given to the particle's nodes this step
+      const double q = c.slip_work;
+      for_each_stencil_weight(G, stencil_at(G, shape, x), [&](int n, double w) {
+        G.force[n] += w * c.force;
+        if (q > 0.0) {
+          G.friction_heat[n] += heat_share_[r] * w * q;
+          heated_.add(n % G.nx, n / G.nx);
+        }
+      });
+      impulse += dp;
+      friction_work += q;
+      records_.push_back({static_cast<int>(r), 1, x, normal, dp, c.sliding});
+    });
+    book_contact_impulse(bodies[r], impulse, impulse.dot(vr), dt, energy);
+    energy.friction += friction_work;
+  }
+  for (std::size_t p = 0; p < P.size(); ++p)  // out of contact: the history ends
+    if (!touched_[p]) P.contact_friction_force[p] = Vec2::Zero();
+}
+
 // The rigid body has infinite mass, so at a contact node only the material's velocity changes.
 // Contact holds where the material approaches the rigid surface and its mean position at the node
 // lies within contact_distance of it (no one-cell gap), or, with particle detection, on the node's
@@ -131,7 +182,7 @@ void RigidContact::compute_node_gaps(const Particles& P, const Grid& G, std::spa
 // normal change (Coulomb stick/slip). Nodes with velocity boundary conditions are never changed.
 void RigidContact::apply(ContactPass pass, double dt, Grid& G, std::vector<RigidBodyState>& bodies,
                          EnergyTotals& energy) {
-  if (geometry_.empty()) return;
+  if (geometry_.empty() || settings_.detection == ContactDetection::Penalty) return;
   std::vector<Vec2>& v = pass == ContactPass::AfterP2G ? G.velocity : G.velocity_new;
   const bool accumulate_force = pass != ContactPass::MuslRemap;
   if (pass == ContactPass::AfterUpdate) std::fill(G.in_contact.begin(), G.in_contact.end(), 0);

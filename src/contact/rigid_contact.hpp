@@ -5,6 +5,7 @@
 // frictional work it leaves on the nodes (frictional_heating.hpp turns it into heat), a record of
 // what it did, and the particle push-out safeguard behind it. docs/cutting.md, "Contact".
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <span>
 #include <vector>
@@ -47,6 +48,7 @@ struct RigidContactSettings {
   double contact_distance = 0.0;    // m: a node's material within this of the surface can be in contact
   ContactDetection detection = ContactDetection::Node;
   double node_mass_cutoff = 0.0;    // kg/m: lighter nodes count as empty
+  double penalty_stiffness = 1.0;   // penalty detection: k = this x m / dt^2 (penalty_law.hpp)
 };
 
 class RigidContact {
@@ -72,6 +74,13 @@ class RigidContact {
   // half-width lp; <= 0: touching or overlapping), and that surface's outward normal.
   void compute_node_gaps(const Particles& particles, const Grid& grid, std::span<const ShapeFunction> body_shapes,
                          const std::vector<RigidBodyState>& bodies);
+
+  // Penalty contact (instead of the nodal passes, after P2G): the force of penalty_law.hpp on every
+  // particle whose domain reaches into a rigid body, spread onto the grid's force by the particle's
+  // weights; the reaction on the body, its work, the frictional work (on grid.friction_heat) and one
+  // record per particle in contact; each particle's contact_friction_force carries its stick history.
+  void apply_penalty(Particles& particles, Grid& grid, std::span<const ShapeFunction> body_shapes,
+                     double inertia_factor, double dt, std::vector<RigidBodyState>& bodies, EnergyTotals& energy);
 
   // One pass of the nodal law on the pass's grid velocity. The passes after P2G and after the
   // momentum update (whose corrections reach the particles) record the impulse on each body, its
@@ -101,6 +110,7 @@ class RigidContact {
   std::vector<std::vector<double>> weight_;  // particle detection: per body, per node: sum S m phi, kg/m
   std::vector<std::vector<Vec2>> normal_;    // per body, per node: sum S m phi n (particle); the normal (gap)
   std::vector<std::vector<double>> gap_;     // gap detection: per body, per node: nearest domain's gap, m
+  std::vector<std::uint8_t> touched_;         // penalty detection: per particle, in contact this step
   std::vector<ContactRecord> records_;
   NodeBox heated_;
   long pushed_out_ = 0;

@@ -62,6 +62,9 @@ inline constexpr unsigned kVtuOptional = 1u << 3;  // snapshots from before the 
     "fracture energy G_f, fixed at damage initiation (rate-dependent; 0 before)")                                     \
   X(double, damage_dissipation, "J_per_m", 0.0, kCheckpoint | kVtu | kVtuRead | kVtuOptional,                         \
     "damage dissipation since the start, per m of thickness; divided by G_f the crack length it stands for")          \
+  /* Contact */                                                                                                       \
+  X(Vec2, contact_friction_force, "N_per_m", Vec2::Zero(), kCheckpoint,                                               \
+    "penalty contact: the friction force on the particle in its last step in contact (zero out of contact)")         \
   /* Identity */                                                                                                      \
   X(std::int32_t, body, "id", 0, kCheckpoint | kVtu | kVtuRead, "index of the body in the scene")                     \
   X(std::int32_t, material, "id", 0, kCheckpoint | kVtu | kVtuRead, "index of the material")

@@ -15,7 +15,7 @@ enum class TimeScheme { USL, MUSL };
 // position within contact_distance_cells of the surface; Particle, the share of the node's mass whose
 // particle domains reach the surface; Gap, the gap between the surface and the nearest particle domain of
 // the node, which the material may close within the step but not cross.
-enum class ContactDetection { Node, Particle, Gap };
+enum class ContactDetection { Node, Particle, Gap, Penalty };
 enum class BoundaryKind { Free, Fixed, Roller };  // Roller = slip: normal velocity zero
 
 struct Rectangle {
@@ -130,6 +130,11 @@ struct SolverSpec {
   double mass_scaling_factor = 1.0;            // f, -
   double mass_scaling_target_time_step = 0.0;  // s; 0 = no target
   ContactDetection contact_detection = ContactDetection::Node;
+  // With contact_detection = Penalty: the normal stiffness of a particle against a rigid surface,
+  // k = penalty_stiffness m / dt^2 per unit overlap of its domain (m its inertial mass, dt the step);
+  // the overlap at a contact pressure p is then about 8 C^2 p / (penalty_stiffness rho c^2) of the
+  // particle's half-width (C the CFL number): small, and a fixed share of the particle on every grid.
+  double penalty_stiffness = 1.0;  // -
 
   bool operator==(const SolverSpec&) const = default;  // field-wise, for round-trip tests
 };

@@ -259,8 +259,11 @@ SolverSpec read_solver(TableReader t, SolverSpec s) {
     t.fail("mass_scaling_target_time_step", "has no meaning with a fixed_time_step; give one of them");
   s.contact_detection = t.choice<ContactDetection>(
       "contact_detection",
-      {{"node", ContactDetection::Node}, {"particle", ContactDetection::Particle}, {"gap", ContactDetection::Gap}},
+      {{"node", ContactDetection::Node}, {"particle", ContactDetection::Particle}, {"gap", ContactDetection::Gap},
+       {"penalty", ContactDetection::Penalty}},
       s.contact_detection);
+  s.penalty_stiffness = t.number("penalty_stiffness", s.penalty_stiffness,
+                                 Range::closed(0.01, 2.0, "", "x m / dt^2 per unit overlap; contact_detection = \"penalty\""));
   t.reject_unknown_keys();
   return s;
 }

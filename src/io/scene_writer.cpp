@@ -56,6 +56,7 @@ const char* name(ContactDetection d) {
     case ContactDetection::Node: return "node";
     case ContactDetection::Particle: return "particle";
     case ContactDetection::Gap: return "gap";
+    case ContactDetection::Penalty: return "penalty";
   }
   return "?";
 }
@@ -111,6 +112,7 @@ void write_scene_tables(const Scene& s, std::ostream& out) {
   out << "mass_scaling_factor = " << num(s.solver.mass_scaling_factor) << "\n";
   out << "mass_scaling_target_time_step = " << num(s.solver.mass_scaling_target_time_step) << "\n";
   out << "contact_detection = \"" << name(s.solver.contact_detection) << "\"\n";
+  out << "penalty_stiffness = " << num(s.solver.penalty_stiffness) << "\n";
 
   out << "\n[output]\n";
   out << "snapshot_interval = " << num(s.output.snapshot_interval) << "\n";

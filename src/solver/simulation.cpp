@@ -46,6 +46,7 @@ Simulation::Simulation(const Scene& scene) : scene_(scene) {
   contact.contact_distance = scene_.solver.contact_distance_cells * grid_.h;
   contact.detection = scene_.solver.contact_detection;
   contact.node_mass_cutoff = node_mass_cutoff_;
+  contact.penalty_stiffness = scene_.solver.penalty_stiffness;
   contact_ = RigidContact(scene_.rigid_bodies, contact);
   heat_transfer_ = any_heat_transfer(scene_.rigid_bodies);
   mark_boundary_nodes(scene_.boundaries, scene_.thermal, grid_);
@@ -77,7 +78,7 @@ void Simulation::restore(const RestartState& state) {
 void Simulation::step(double max_dt) {
   const double dt = begin_step(max_dt);                 // 1. dt (CFL), particle order, conduction due?
   particles_to_grid();                                  // 2. P2G
-  prepare_rigid_contact();                              // 3. rigid bodies at their nodes
+  prepare_rigid_contact(dt);                            // 3. rigid bodies at their nodes (penalty: forces)
   apply_rigid_contact(ContactPass::AfterP2G, dt);       // 4. contact on the P2G momenta
   update_grid_momentum(dt);                             // 5. p += dt f, boundary conditions,
   apply_rigid_contact(ContactPass::AfterUpdate, dt);    //    contact (force on the bodies, friction work)
@@ -109,8 +110,10 @@ void Simulation::particles_to_grid() {
   apply_velocity_boundary_conditions(BoundaryPhase::AfterP2G, parallel_, grid_);
 }
 
-void Simulation::prepare_rigid_contact() {
+void Simulation::prepare_rigid_contact(double dt) {
   contact_.begin_step(state_.rigid_bodies);
+  if (!contact_.empty() && scene_.solver.contact_detection == ContactDetection::Penalty)
+    contact_.apply_penalty(particles_, grid_, shapes_, inertia_factor_, dt, state_.rigid_bodies, state_.energy);
   if (!contact_.empty() && scene_.solver.contact_detection == ContactDetection::Particle)
     contact_.compute_particle_weights(particles_, grid_, shapes_, inertia_factor_, state_.rigid_bodies);
   if (!contact_.empty() && scene_.solver.contact_detection == ContactDetection::Gap)

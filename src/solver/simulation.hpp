@@ -71,7 +71,7 @@ class Simulation {
   // The stages of step(), in its order.
   double begin_step(double max_dt);
   void particles_to_grid();
-  void prepare_rigid_contact();
+  void prepare_rigid_contact(double dt);
   void apply_rigid_contact(ContactPass pass, double dt);
   void update_grid_momentum(double dt);
   void grid_to_particles(double dt);

@@ -266,3 +266,34 @@ TEST(RigidContact, GapDetectionStartsContactWhenTheDomainsTouch) {
     }
   }
 }
+
+// Penalty contact: the normal force is a spring on the overlap of the particle domains with the wall, with no
+// dashpot. Measured: the first impulse comes one step after the step in which the domains reach the wall
+// (the overlap is taken at the start of a step), J = 1.92-1.96 m v0 (2 m v0 exact), 4.2-5.9 % of the energy
+// lost, less on the finer grid (node detection here: within 3 % and 6 %); no particle centre enters the
+// wall. The bounds hold those figures, so that a dashpot or a lost step fails the test.
+TEST(RigidContact, PenaltyContactReboundStartsWhenTheDomainsTouch) {
+  const double v0 = 1.0;
+  for (double offset : {0.1, 0.7}) {
+    double loss_coarse = 0.0;
+    for (double h : {0.005, 0.0025}) {
+      SCOPED_TRACE(::testing::Message() << "h = " << h << " m, wall " << offset << " h beyond the block");
+      const Rebound r = rebound_from_wall(h, v0, offset * h, ContactDetection::Penalty);
+      const double M = r.mass, touch = offset * h / v0;
+      const double loss = 1.0 - r.energy_after / (0.5 * M * v0 * v0);
+      std::printf("penalty, h = %.4f, offset %.1f h: first impulse at %.3f ms (touch %.3f ms, dt %.3f ms), J = %.4f m v0, "
+                  "energy lost %.4f, v after %.3f v0\n",
+                  h, offset, 1e3 * r.first_contact_time, 1e3 * touch, 1e3 * r.time_step, r.impulse_x / (M * v0), loss,
+                  r.velocity_after / v0);
+      EXPECT_GE(r.first_contact_time, touch - 1e-9);
+      EXPECT_LE(r.first_contact_time, touch + 2.01 * r.time_step);
+      EXPECT_NEAR(r.impulse_x, 2 * M * v0, 0.05 * 2 * M * v0);
+      EXPECT_NEAR(r.impulse_y, 0.0, 1e-3 * M * v0);
+      EXPECT_LT(loss, 0.065);
+      EXPECT_GT(r.min_distance, 0.0) << "a particle centre entered the wall";
+      EXPECT_LT(r.velocity_after, -0.9 * v0);
+      if (loss_coarse > 0.0) EXPECT_LT(loss, loss_coarse);
+      loss_coarse = loss;
+    }
+  }
+}

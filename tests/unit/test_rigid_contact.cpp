@@ -5,7 +5,10 @@
 // update found contact. docs/cutting.md, "Contact".
 #include <gtest/gtest.h>
 
+#include "contact/penalty_law.hpp"
 #include "contact/rigid_contact.hpp"
+#include "core/particles.hpp"
+#include "core/shape_functions.hpp"
 
 using namespace mpmcut;
 
@@ -132,4 +135,102 @@ TEST(ContactLaw, GapCorrectionLimitsTheApproachToTheGapClosingSpeed) {
     const ContactCorrection c = coulomb_rigid_gap_correction(Vec2(0.0, 0.7), normal, 0.0, 1.0, true);
     EXPECT_NEAR((c.new_relative - Vec2(0.0, -1.0)).norm(), 0.0, 1e-15);
   }
+}
+
+// The penalty law (contact_detection = "penalty", contact/penalty_law.hpp): normal and tangential springs
+// of stiffness k = s m / dt^2; the friction force builds up from the last step's by k v_t dt (stick) and is
+// returned onto mu f_n where it would exceed it (slide), dissipating mu f_n times the slip beyond the spring's.
+TEST(PenaltyLaw, NormalSpringAndElasticStickWithCoulombLimit) {
+  const Vec2 normal(0.0, 1.0);
+  const double m = 2e-6, dt = 1e-8, s = 0.5, overlap = 1e-9;
+  const double k = s * m / (dt * dt);  // 1e10 N/m^2
+  const double fn = k * overlap;       // 10 N/m
+  {  // fast slip 3 m/s: the trial force k v_t dt = 300 N/m exceeds mu fn = 3 N/m; slides against the slip
+    const PenaltyContactForce c = penalty_contact_force(overlap, Vec2(3.0, -1.0), normal, m, dt, s, 0.3);
+    EXPECT_NEAR(c.normal_force, fn, 1e-12 * fn);
+    EXPECT_TRUE(c.sliding);
+    EXPECT_NEAR((c.force - Vec2(-0.3 * fn, fn)).norm(), 0.0, 1e-12 * fn);
+    EXPECT_NEAR(c.slip_work, 0.3 * fn * (3.0 * dt - 0.3 * fn / k), 1e-12 * 0.3 * fn * 3.0 * dt);
+  }
+  {  // slow slip 1e-3 m/s: trial 0.1 N/m below mu fn; sticks, no dissipation
+    const PenaltyContactForce c = penalty_contact_force(overlap, Vec2(-1e-3, 0.0), normal, m, dt, s, 0.3);
+    EXPECT_FALSE(c.sliding);
+    EXPECT_NEAR((c.friction_force - Vec2(k * dt * 1e-3, 0.0)).norm(), 0.0, 1e-12 * fn);
+    EXPECT_EQ(c.slip_work, 0.0);
+    // The next step at zero slip keeps the force (elastic stick): a sticking particle can carry shear.
+    const PenaltyContactForce next = penalty_contact_force(overlap, Vec2::Zero(), normal, m, dt, s, 0.3, c.friction_force);
+    EXPECT_EQ(next.friction_force, c.friction_force);
+    // It builds up over steps until it reaches mu fn, and no further.
+    Vec2 f = Vec2::Zero();
+    int steps = 0;
+    for (; steps < 100; ++steps) {
+      const PenaltyContactForce d = penalty_contact_force(overlap, Vec2(-1.3e-3, 0.0), normal, m, dt, s, 0.3, f);
+      f = d.friction_force;
+      if (d.sliding) break;
+    }
+    EXPECT_EQ(steps, 23);  // 23 x 0.13 N/m = 2.99 N/m < mu fn = 3 N/m < 24 x 0.13
+    EXPECT_NEAR(f.x(), 0.3 * fn, 1e-12 * fn);
+  }
+  {  // the history is taken in the current tangent plane: its normal part is dropped
+    const PenaltyContactForce c =
+        penalty_contact_force(overlap, Vec2::Zero(), normal, m, dt, s, 0.3, Vec2(1.0, 5.0));
+    EXPECT_NEAR((c.friction_force - Vec2(1.0, 0.0)).norm(), 0.0, 1e-14);
+  }
+  {  // no overlap: no force, whatever the velocity or history
+    const PenaltyContactForce c = penalty_contact_force(-1e-9, Vec2(1.0, -5.0), normal, m, dt, s, 0.3, Vec2(1, 0));
+    EXPECT_EQ(c.force, Vec2::Zero());
+    EXPECT_EQ(c.slip_work, 0.0);
+  }
+  {  // the normal force depends on the overlap only, not on the approach speed (no dashpot)
+    const PenaltyContactForce a = penalty_contact_force(overlap, Vec2(0.0, -5.0), normal, m, dt, s, 0.0);
+    const PenaltyContactForce b = penalty_contact_force(overlap, Vec2(0.0, 5.0), normal, m, dt, s, 0.0);
+    EXPECT_EQ(a.force, b.force);
+  }
+}
+
+// apply_penalty on a hand-made particle above the plate of PlateFixture: its force reaches the grid as
+// S_ip f (summing to f), the plate gets the reaction, the body's work and the frictional work are booked.
+TEST(PenaltyContact, ParticleForceGoesToItsNodesAndTheReactionToThePlate) {
+  PlateFixture f(0.3);
+  RigidContactSettings settings;
+  settings.detection = ContactDetection::Penalty;
+  settings.penalty_stiffness = 0.5;
+  RigidBodySpec plate;
+  plate.name = "plate";
+  plate.polygon.vertices = {{2 * h, 2 * h}, {18 * h, 2 * h}, {18 * h, 5 * h}, {2 * h, 5 * h}};
+  plate.friction = 0.3;
+  f.contact = RigidContact({plate}, settings);
+  f.bodies[0].velocity = Vec2(-1.0, 0.0);
+  const ShapeFunction shape(ShapeFunctionKind::UGimp, h, 2);  // lp = h / 4
+  Particles P;
+  const double m = 1e-3, dt = 1e-7;
+  P.add(Vec2(10.3 * h, 5 * h + 0.2 * h), Vec2(2.0, -0.5), m, 0.25 * h * h, 300.0, 0, 0);  // overlap 0.05 h
+  P.add(Vec2(8.3 * h, 5 * h + 0.3 * h), Vec2(2.0, -0.5), m, 0.25 * h * h, 300.0, 0, 0);   // clear of it
+  f.grid.reset();
+  f.contact.begin_step(f.bodies);
+  const std::vector<ShapeFunction> shapes{shape};
+  f.contact.apply_penalty(P, f.grid, shapes, 1.0, dt, f.bodies, f.energy);
+  const PenaltyContactForce c =
+      penalty_contact_force(0.05 * h, Vec2(3.0, -0.5), Vec2(0, 1), m, dt, 0.5, 0.3);
+  ASSERT_TRUE(c.sliding);
+  Vec2 sum = Vec2::Zero();
+  double heat = 0.0;
+  for (std::size_t n = 0; n < f.grid.node_count(); ++n) {
+    sum += f.grid.force[n];
+    heat += f.grid.friction_heat[n];
+  }
+  EXPECT_NEAR((sum - c.force).norm(), 0.0, 1e-12 * c.force.norm());
+  EXPECT_NEAR((f.bodies[0].step_impulse + dt * c.force).norm(), 0.0, 1e-12 * dt * c.force.norm());
+  EXPECT_NEAR(f.energy.external_work, dt * c.force.dot(Vec2(-1.0, 0.0)), 1e-12);
+  EXPECT_NEAR(f.energy.friction, c.slip_work, 1e-15);
+  EXPECT_NEAR(heat, c.slip_work, 1e-15);
+  ASSERT_EQ(f.contact.records().size(), 1u);  // only the overlapping particle
+  EXPECT_TRUE(f.contact.records()[0].sliding);
+  EXPECT_EQ(P.contact_friction_force[0], c.friction_force);  // its history for the next step
+  EXPECT_EQ(P.contact_friction_force[1], Vec2::Zero());
+  // The nodal passes do nothing with penalty detection.
+  const std::vector<Vec2> before = f.grid.velocity;
+  f.grid.velocity[f.grid.index(10, 5)] = Vec2(0.0, -1.0);
+  f.contact.apply(ContactPass::AfterP2G, dt, f.grid, f.bodies, f.energy);
+  EXPECT_EQ(f.grid.velocity[f.grid.index(10, 5)], Vec2(0.0, -1.0));
 }

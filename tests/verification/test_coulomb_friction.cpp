@@ -34,6 +34,7 @@ struct FrictionRun {
   double normal_impulse = 0.0;    // N s per m over the window
   double pass0_normal_share = 0.0;  // share of the normal impulse taken by the contact pass after P2G
   double worst_node_error = 0.0;  // max over sliding contact nodes of | |dp_t| - mu dp_n | / (mu dp_n)
+  double sliding_normal_share = 0.0;  // share of the normal impulse at sliding nodes (particles)
 };
 
 // An elastic block (0.2 m x 0.1 m, E = 1 MPa) resting on a rigid plate whose top is y = 0.1 m,
@@ -59,7 +60,7 @@ FrictionRun drag_block(double h, double mu, Vec2 g, Vec2 plate_velocity, double 
   for (double m : sim.particles().mass) M += m;
   FrictionRun out;
   Vec2 J0 = Vec2::Zero();
-  double st = 0, sv = 0, stt = 0, stv = 0, pass0 = 0, all = 0;
+  double st = 0, sv = 0, stt = 0, stv = 0, pass0 = 0, all = 0, sliding = 0;
   int n = 0;
   bool started = false;
   while (sim.time() < t1) {
@@ -75,6 +76,7 @@ FrictionRun drag_block(double h, double mu, Vec2 g, Vec2 plate_velocity, double 
       const double dpt = (c.impulse - dpn * c.normal).norm();
       all += dpn;
       if (c.pass == 0) pass0 += dpn;
+      if (c.sliding) sliding += dpn;
       if (c.sliding && mu > 0.0 && dpn > 0.0)
         out.worst_node_error = std::max(out.worst_node_error, std::abs(dpt - mu * dpn) / (mu * dpn));
     }
@@ -91,6 +93,7 @@ FrictionRun drag_block(double h, double mu, Vec2 g, Vec2 plate_velocity, double 
   out.ratio = std::abs(J.x()) / -J.y();
   out.acceleration = (n * stv - st * sv) / (n * stt - st * st);
   out.pass0_normal_share = all > 0.0 ? pass0 / all : 0.0;
+  out.sliding_normal_share = all > 0.0 ? sliding / all : 0.0;
   return out;
 }
 
@@ -181,6 +184,58 @@ TEST(CoulombFriction, GapDetectionKeepsFrictionRatioMu) {
       EXPECT_NEAR(r.acceleration, mu * g, 0.02 * mu * g);
       std::printf("gap detection, h = %.3f m, mu = %.2f: friction / normal = %.6f, a = %.4f m/s^2\n", h, mu,
                   r.ratio, r.acceleration);
+    }
+  }
+}
+
+// Penalty contact (solver.contact_detection = "penalty"): each particle whose domain reaches into the
+// plate feels a normal spring force and a friction force of at most mu times it. While the block slides
+// every particle in contact is at the Coulomb limit, so the plate's friction over normal impulse is mu
+// (0.5 %), particle by particle to round-off, and the block accelerates at mu g (2 %), on two grids.
+TEST(CoulombFriction, PenaltyContactKeepsFrictionRatioMu) {
+  const double g = 10.0;
+  for (double h : {0.02, 0.01}) {
+    for (double mu : {0.1, 0.3, 0.5}) {
+      SCOPED_TRACE(::testing::Message() << "h = " << h << " m, mu = " << mu);
+      const FrictionRun r = drag_block(h, mu, Vec2(0, -g), Vec2(2.0, 0.0), 0.05, 0.2, ContactDetection::Penalty);
+      EXPECT_NEAR(r.normal_impulse, 1000.0 * 0.02 * g * 0.15, 0.05 * 1000.0 * 0.02 * g * 0.15);
+      EXPECT_NEAR(r.ratio, mu, 0.005 * mu);
+      EXPECT_LT(r.worst_node_error, 1e-6);
+      EXPECT_NEAR(r.acceleration, mu * g, 0.02 * mu * g);
+      std::printf("penalty, h = %.3f m, mu = %.2f: friction / normal = %.6f, a = %.4f m/s^2\n", h, mu, r.ratio,
+                  r.acceleration);
+    }
+  }
+}
+
+// Penalty contact below and above the Coulomb threshold: under gravity tilted by tan theta = 0.15 < mu = 0.3
+// the friction / normal ratio is tan theta (2 %), what holds the block; at tan theta = 0.6 it slides with the
+// ratio mu. KNOWN LIMIT: the undamped normal springs let this soft block chatter on the plate (the number
+// of particles in contact falls from 20 to 2-4 at times, and 50-60 % of the normal impulse is at sliding
+// particles), so in stick the block creeps: measured 6.7-6.9 mm/s after 0.4 s (node detection: < 1 mm/s);
+// the bound of 1 cm/s holds that, so that more chatter fails the test.
+TEST(CoulombFriction, PenaltyContactSticksBelowThresholdAndSlidesAbove) {
+  const double g = 10.0, mu = 0.3;
+  for (double h : {0.02, 0.01}) {
+    SCOPED_TRACE(::testing::Message() << "h = " << h << " m");
+    {
+      const double tan_theta = 0.15, theta = std::atan(tan_theta);
+      const FrictionRun r = drag_block(h, mu, g * Vec2(std::sin(theta), -std::cos(theta)), Vec2::Zero(), 0.1, 0.4,
+                                       ContactDetection::Penalty);
+      EXPECT_NEAR(r.ratio, tan_theta, 0.02 * tan_theta);
+      EXPECT_LT(std::abs(r.mean_velocity), 1e-2);
+      std::printf("penalty stick, h = %.3f m: friction / normal = %.5f (tan theta %.3f), v = %.2e m/s, sliding share "
+                  "%.3f\n", h, r.ratio, tan_theta, r.mean_velocity, r.sliding_normal_share);
+    }
+    {
+      const double tan_theta = 0.6, theta = std::atan(tan_theta);
+      const FrictionRun r = drag_block(h, mu, g * Vec2(std::sin(theta), -std::cos(theta)), Vec2::Zero(), 0.1, 0.4,
+                                       ContactDetection::Penalty);
+      EXPECT_NEAR(r.ratio, mu, 0.005 * mu);
+      const double a = g * (std::sin(theta) - mu * std::cos(theta));
+      EXPECT_NEAR(r.acceleration, a, 0.02 * a);
+      std::printf("penalty slide, h = %.3f m: friction / normal = %.5f (mu %.3f), a = %.4f m/s^2 (expected %.4f)\n",
+                  h, r.ratio, mu, r.acceleration, a);
     }
   }
 }
