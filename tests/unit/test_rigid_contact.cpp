@@ -204,14 +204,14 @@ TEST(PenaltyContact, ParticleForceGoesToItsNodesAndTheReactionToThePlate) {
   const ShapeFunction shape(ShapeFunctionKind::UGimp, h, 2);  // lp = h / 4
   Particles P;
   const double m = 1e-3, dt = 1e-7;
-  P.add(Vec2(10.3 * h, 5 * h + 0.2 * h), Vec2(2.0, -0.5), m, 0.25 * h * h, 300.0, 0, 0);  // overlap 0.05 h
+  P.add(Vec2(10.3 * h, 5 * h + 0.2499 * h), Vec2(2.0, -0.5), m, 0.25 * h * h, 300.0, 0, 0);  // overlap 1e-4 h
   P.add(Vec2(8.3 * h, 5 * h + 0.3 * h), Vec2(2.0, -0.5), m, 0.25 * h * h, 300.0, 0, 0);   // clear of it
   f.grid.reset();
   f.contact.begin_step(f.bodies);
   const std::vector<ShapeFunction> shapes{shape};
   f.contact.apply_penalty(P, f.grid, shapes, 1.0, dt, f.bodies, f.energy);
   const PenaltyContactForce c =
-      penalty_contact_force(0.05 * h, Vec2(3.0, -0.5), Vec2(0, 1), m, dt, 0.5, 0.3);
+      penalty_contact_force(0.25 * h - (5.2499 * h - 5 * h), Vec2(3.0, -0.5), Vec2(0, 1), m, dt, 0.5, 0.3);
   ASSERT_TRUE(c.sliding);
   Vec2 sum = Vec2::Zero();
   double heat = 0.0;
@@ -219,14 +219,15 @@ TEST(PenaltyContact, ParticleForceGoesToItsNodesAndTheReactionToThePlate) {
     sum += f.grid.force[n];
     heat += f.grid.friction_heat[n];
   }
-  EXPECT_NEAR((sum - c.force).norm(), 0.0, 1e-12 * c.force.norm());
-  EXPECT_NEAR((f.bodies[0].step_impulse + dt * c.force).norm(), 0.0, 1e-12 * dt * c.force.norm());
-  EXPECT_NEAR(f.energy.external_work, dt * c.force.dot(Vec2(-1.0, 0.0)), 1e-12);
-  EXPECT_NEAR(f.energy.friction, c.slip_work, 1e-15);
-  EXPECT_NEAR(heat, c.slip_work, 1e-15);
+  ASSERT_GT(c.slip_work, 0.0);
+  EXPECT_NEAR((sum - c.force).norm(), 0.0, 1e-8 * c.force.norm());
+  EXPECT_NEAR((f.bodies[0].step_impulse + dt * c.force).norm(), 0.0, 1e-8 * dt * c.force.norm());
+  EXPECT_NEAR(f.energy.external_work, dt * c.force.dot(Vec2(-1.0, 0.0)), 1e-8 * std::abs(dt * c.force.x()));
+  EXPECT_NEAR(f.energy.friction, c.slip_work, 1e-8 * c.slip_work);
+  EXPECT_NEAR(heat, c.slip_work, 1e-8 * c.slip_work);
   ASSERT_EQ(f.contact.records().size(), 1u);  // only the overlapping particle
   EXPECT_TRUE(f.contact.records()[0].sliding);
-  EXPECT_EQ(P.contact_friction_force[0], c.friction_force);  // its history for the next step
+  EXPECT_NEAR((P.contact_friction_force[0] - c.friction_force).norm(), 0.0, 1e-8 * c.force.norm());  // its history
   EXPECT_EQ(P.contact_friction_force[1], Vec2::Zero());
   // The nodal passes do nothing with penalty detection.
   const std::vector<Vec2> before = f.grid.velocity;
