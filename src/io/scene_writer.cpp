@@ -112,7 +112,10 @@ void write_scene_tables(const Scene& s, std::ostream& out) {
   out << "mass_scaling_factor = " << num(s.solver.mass_scaling_factor) << "\n";
   out << "mass_scaling_target_time_step = " << num(s.solver.mass_scaling_target_time_step) << "\n";
   out << "contact_detection = \"" << name(s.solver.contact_detection) << "\"\n";
-  out << "penalty_stiffness = " << num(s.solver.penalty_stiffness) << "\n";
+  // Only where it acts: scenes of the other detections stay as they were written before the key
+  // existed, so committed run records (validate --records) still match their conditions.
+  if (s.solver.contact_detection == ContactDetection::Penalty)
+    out << "penalty_stiffness = " << num(s.solver.penalty_stiffness) << "\n";
 
   out << "\n[output]\n";
   out << "snapshot_interval = " << num(s.output.snapshot_interval) << "\n";

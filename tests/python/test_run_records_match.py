@@ -1,0 +1,65 @@
+"""The committed validation records still match the conditions that today's binary would run.
+
+usage: /usr/bin/python3 test_run_records_match.py MPMCUT_BINARY SCRATCH_DIR
+
+`validate --records DIR` reports a condition from its record only when the record's scene.toml is,
+byte for byte, the scene the binary writes for that condition (run/run_case.cpp, existing_run). A
+change that writes one more key into every scene (a new solver option, say) therefore silently turns
+every committed record into a condition "still to run", and the committed reports could no longer be
+regenerated without hours of runs. This test lists the two committed matrices with `validate --list`
+(which runs nothing) and checks that every record directory is reported as complete from its record.
+A new key must be written only where it is set (io/scene_writer.cpp) to keep the records valid.
+"""
+import os
+import re
+import subprocess
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+# (records directory, the validate options it was run with: its README's command)
+MATRICES = [
+    ("docs/results/validation_matrix/records", []),
+    ("docs/results/validation_speed_ends/records",
+     ["--material-file", "docs/results/calibration_speed_ends/best_material.toml"]),
+]
+
+
+def listed_states(binary, records, options, out):
+    cmd = [binary, "validate", "--list", "--out", out, "--records", records] + options
+    res = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, timeout=300)
+    if res.returncode != 0:
+        raise SystemExit(f"FAIL: {' '.join(cmd)} exited {res.returncode}:\n{res.stderr}")
+    states = {}
+    for line in res.stdout.splitlines():
+        m = re.match(r"^((?:forces|chip)_\S+)\s.*\s(\S+)$", line)
+        if m:
+            states[m.group(1)] = m.group(2)
+    return states
+
+
+def main():
+    if len(sys.argv) != 3:
+        raise SystemExit(__doc__)
+    binary, scratch = sys.argv[1], sys.argv[2]
+    os.makedirs(scratch, exist_ok=True)
+    failures = []
+    for i, (records, options) in enumerate(MATRICES):
+        recorded = sorted(d for d in os.listdir(os.path.join(ROOT, records))
+                          if os.path.isfile(os.path.join(ROOT, records, d, "scene.toml")))
+        if not recorded:
+            failures.append(f"{records}: no records found")
+            continue
+        states = listed_states(binary, records, options, os.path.join(scratch, f"matrix{i}"))
+        stale = [d for d in recorded if states.get(d) != "record"]
+        print(f"{records}: {len(recorded) - len(stale)} of {len(recorded)} records match their condition")
+        if stale:
+            failures.append(f"{records}: {len(stale)} records no longer match the scene this binary writes "
+                            f"(first: {stale[0]}, listed as '{states.get(stale[0], 'absent')}')")
+    if failures:
+        raise SystemExit("FAIL:\n  " + "\n  ".join(failures))
+    print("OK")
+
+
+if __name__ == "__main__":
+    main()
