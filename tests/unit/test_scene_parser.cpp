@@ -548,6 +548,15 @@ TEST(SceneWriter, RoundTripsEveryContactDetection) {
   }
   EXPECT_EQ(parse_scene(kBase, "case.toml", {"solver.contact_detection=\"gap\""}).solver.contact_detection,
             ContactDetection::Gap);
+  // The penalty's stiffness travels with it; the other detections' scenes do not carry the key, so the
+  // scene text of a run without it stays what it was before the key existed (committed run records match).
+  const Scene penalty = parse_scene(kBase, "case.toml",
+                                    {"solver.contact_detection=\"penalty\"", "solver.penalty_stiffness=0.5"});
+  EXPECT_EQ(round_trip(penalty).solver.contact_detection, ContactDetection::Penalty);
+  EXPECT_DOUBLE_EQ(round_trip(penalty).solver.penalty_stiffness, 0.5);
+  std::ostringstream node_text;
+  write_scene(Case{parse_scene(kBase, "case.toml")}, node_text);
+  EXPECT_EQ(node_text.str().find("penalty_stiffness"), std::string::npos);
 }
 
 }  // namespace
