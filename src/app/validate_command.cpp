@@ -21,6 +21,7 @@
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
 #include "io/material_library.hpp"
+#include "io/scene_writer.hpp"
 #include "run/case_loading.hpp"
 #include "run/run_summary.hpp"
 #include "studies/measured_conditions.hpp"
@@ -104,6 +105,7 @@ struct ValidateOptions {
   std::optional<double> friction;  // Coulomb coefficient; none: the default (0.35)
   std::optional<double> friction_heat_share;  // none: the preset's (all frictional heat into the workpiece)
   std::optional<double> tool_heat_transfer_coefficient, tool_temperature;  // none: an adiabatic tool
+  std::string contact_detection;  // empty: the preset's (node detection)
 };
 
 std::string join(const std::vector<std::string>& parts, const std::string& sep) {
@@ -161,6 +163,7 @@ ConditionRunSettings run_settings(const ValidateOptions& o) {
   s.friction_heat_share = o.friction_heat_share;
   s.tool_heat_transfer_coefficient = o.tool_heat_transfer_coefficient;
   s.tool_temperature = o.tool_temperature;
+  s.contact_detection = o.contact_detection;
   return s;
 }
 
@@ -758,6 +761,9 @@ int run_validation(const ValidateOptions& o) {
                                                       : std::string("the initial temperature"),
                             *settings.tool_heat_transfer_coefficient)
               : std::string("; the tool surface is adiabatic"))
+      << "; contact detection: "
+      << (settings.contact_detection.empty() ? std::string("node (the preset's)")
+                                             : settings.contact_detection + " (--contact-detection)")
       << ".\n"
       << "- Material: the `" << settings.material << "` set"
       << (settings.material_definitions.empty() ? " of the material library" : "") << " ("
@@ -883,6 +889,10 @@ void add_validate_command(CLI::App& app) {
                 "file then carries the file's sets");
   v->add_option("--friction", o->friction, "Coulomb coefficient at the tool (default 0.35; e.g. a calibrated one)")
       ->check(CLI::Range(0.0, 2.0));
+  v->add_option("--contact-detection", o->contact_detection,
+                "How the tool contact finds the material (solver.contact_detection; default node; penalty: a "
+                "spring per particle, smooth in the tool's position on the grid, docs/cutting.md)")
+      ->check(CLI::IsMember(contact_detection_names()));
   // The tool's thermal options: bounded numbers that, when given, go into every case file.
   struct ThermalOption {
     const char* name;

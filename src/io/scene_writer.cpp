@@ -60,7 +60,8 @@ const char* name(ContactDetection d) {
   }
   return "?";
 }
-
+constexpr ContactDetection kContactDetections[] = {ContactDetection::Node, ContactDetection::Particle,
+                                                   ContactDetection::Gap, ContactDetection::Penalty};
 
 std::string shape_line(const Shape& s) {
   switch (s.kind) {
@@ -155,6 +156,12 @@ void write_scene_tables(const Scene& s, std::ostream& out) {
       out << "heat_transfer_coefficient = " << num(r.heat_transfer_coefficient) << "\n";
     if (r.temperature != RigidBodySpec{}.temperature) out << "temperature = " << num(r.temperature) << "\n";
   }
+}
+
+std::vector<std::string> contact_detection_names() {
+  std::vector<std::string> names;
+  for (ContactDetection d : kContactDetections) names.emplace_back(name(d));
+  return names;
 }
 
 }  // namespace mpmcut

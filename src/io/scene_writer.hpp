@@ -4,12 +4,17 @@
 // parses back to an equal Scene. The records that a layer above owns (the cutting process) are
 // appended by run/case_loading.hpp's write_scene, which writes the expanded scene of each run.
 #include <ostream>
+#include <string>
+#include <vector>
 
 #include "solver/scene.hpp"
 
 namespace mpmcut {
 
 void write_scene_tables(const Scene& scene, std::ostream& out);
+
+// Every contact detection as a case file spells it (solver.contact_detection), for options that pass one on.
+std::vector<std::string> contact_detection_names();
 
 // One [[material]] table with every parameter explicit (as in write_scene_tables).
 void write_material(const MaterialParameters& m, std::ostream& out);

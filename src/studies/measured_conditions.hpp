@@ -83,6 +83,9 @@ struct ConditionRunSettings {
   std::optional<double> tool_heat_transfer_coefficient;
   std::optional<double> tool_temperature;
   int snapshots = 0;        // VTU snapshots of each run; 0: 2 with quick, else 20
+  // solver.contact_detection of every case (a name as the case file spells it); empty: the preset's, and the
+  // case text stays as it was before the option existed (committed run records still match).
+  std::string contact_detection;
 };
 
 // Cells across t0 of chip-type conditions: at least the chip analysis' resolved count (below it

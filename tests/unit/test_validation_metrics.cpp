@@ -45,6 +45,23 @@ TEST(ValidationResolution, CaseFileCellSizeFollowsTheRule) {
   EXPECT_NEAR(cell_of("chip", 0.1, 5.0), 10e-6, 1e-12);
 }
 
+// --contact-detection reaches the run's scene; without it the case text has no [solver] table, so the cases (and
+// the committed run records made from them) are what they were before the option existed.
+TEST(ValidationCases, ContactDetectionReachesTheScene) {
+  CuttingCondition c;
+  c.id = "test";
+  c.kind = "forces";
+  c.speed_m_per_s = 1.0;
+  c.h_mm = 0.1;
+  c.edge_radius_um = 30.0;
+  ConditionRunSettings s;
+  EXPECT_EQ(condition_case_text(c, s).find("[solver]"), std::string::npos);
+  EXPECT_EQ(parse_case(condition_case_text(c, s), "test.toml").scene.solver.contact_detection, ContactDetection::Node);
+  s.contact_detection = "penalty";
+  EXPECT_EQ(parse_case(condition_case_text(c, s), "test.toml").scene.solver.contact_detection,
+            ContactDetection::Penalty);
+}
+
 // Fc = a + b ln v is recovered exactly; a falling force has a negative slope.
 TEST(ValidationTrend, SlopeOverLogSpeed) {
   const std::vector<double> v{10, 100, 400};
