@@ -6,7 +6,7 @@ usage: /usr/bin/python3 test_run_records_match.py MPMCUT_BINARY SCRATCH_DIR
 byte for byte, the scene the binary writes for that condition (run/run_case.cpp, existing_run). A
 change that writes one more key into every scene (a new solver option, say) therefore silently turns
 every committed record into a condition "still to run", and the committed reports could no longer be
-regenerated without hours of runs. This test lists the two committed matrices with `validate --list`
+regenerated without hours of runs. This test lists the committed matrices with `validate --list`
 (which runs nothing) and checks that every record directory is reported as complete from its record.
 A new key must be written only where it is set (io/scene_writer.cpp) to keep the records valid.
 """
@@ -22,6 +22,8 @@ MATRICES = [
     ("docs/results/validation_matrix/records", []),
     ("docs/results/validation_speed_ends/records",
      ["--material-file", "docs/results/calibration_speed_ends/best_material.toml"]),
+    ("docs/results/validation_speed_ends_penalty/records",
+     ["--material-file", "docs/results/calibration_speed_ends/best_material.toml", "--contact-detection", "penalty"]),
 ]
 
 
