@@ -541,9 +541,10 @@ TEST(SceneOverrides, CuttingSpeedReplacesTheOtherSpelling) {
 }
 
 TEST(SceneWriter, RoundTripsEveryContactDetection) {
-  for (const char* detection : {"node", "particle", "gap"}) {
+  // Every name the writer knows (and validate --contact-detection offers) is one the parser reads back.
+  for (const std::string& detection : contact_detection_names()) {
     SCOPED_TRACE(detection);
-    const Scene s = parse_scene(kBase, "case.toml", {std::string("solver.contact_detection=\"") + detection + "\""});
+    const Scene s = parse_scene(kBase, "case.toml", {"solver.contact_detection=\"" + detection + "\""});
     EXPECT_EQ(round_trip(s).solver.contact_detection, s.solver.contact_detection);
   }
   EXPECT_EQ(parse_scene(kBase, "case.toml", {"solver.contact_detection=\"gap\""}).solver.contact_detection,
