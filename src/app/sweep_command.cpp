@@ -134,12 +134,14 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
                    "shear_zone_max_temperature_K", "tool_chip_max_temperature_K", "chip_classification",
                    "chip_classification_confidence", "segmentation_degree", "pitch_um", "segmentation_frequency_kHz", "plastic_work_fraction",
                    "damage_fraction", "friction_fraction", "kinetic_elastic_fraction", "numerical_fraction",
-                   "wall_time_s", "message"};
+                   "rake_friction_work_per_travel_N_per_mm", "edge_flank_friction_work_per_travel_N_per_mm",
+                   "rake_mean_slip_speed_m_per_s", "wall_time_s", "message"};
   table.headings = {"case", "V (m/s)", "V (m/min)", "h (mm)", "cell (µm)", "cells across h", "mass scaling",
                     "status", "Fc (N/mm)", "Ft (N/mm)", "force window", "t0/tc", "T max (K)", "T shear zone (K)",
                     "T tool–chip (K)", "chip", "chip type confidence", "segmentation degree", "pitch (µm)", "frequency (kHz)",
                     "plastic / W", "damage / W", "friction / W", "kinetic+elastic / W", "numerical / W",
-                    "wall (s)", "message"};
+                    "rake friction work / travel (N/mm)", "edge+flank friction work / travel (N/mm)",
+                    "rake slip speed (m/s)", "wall (s)", "message"};
   int failed = 0;
   std::vector<CaseResult> results;
   for (std::size_t i = 0; i < cases.size(); ++i) {
@@ -163,6 +165,9 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
                           format_number(fraction(r.damage_J_per_m), 3), format_number(fraction(r.friction_J_per_m), 3),
                           format_number(fraction(r.kinetic_elastic_J_per_m), 3),
                           format_number(fraction(r.numerical_J_per_m), 3),
+                          format_number(r.tool_force_split.rake_friction_work_N_per_mm, 3),
+                          format_number(r.tool_force_split.edge_flank_friction_work_N_per_mm, 3),
+                          format_number(r.tool_force_split.rake_slip_speed_m_per_s, 3),
                           format_number(r.wall_time_s ? r.wall_time_s : std::optional<double>(runs[i].wall_time_s), 3),
                           r.message});
   }

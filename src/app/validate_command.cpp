@@ -487,7 +487,8 @@ int run_validation(const ValidateOptions& o) {
                         "measured_status", "origin", "status", "cutting_force_N_per_mm", "thrust_force_N_per_mm",
                         "force_window", "Fc_drift_in_window_percent", "Ft_drift_in_window_percent",
                         "rake_normal_force_N_per_mm", "rake_friction_force_N_per_mm", "edge_flank_cutting_force_N_per_mm",
-                        "edge_flank_thrust_force_N_per_mm", "chip_thickness_ratio", "chip_thickness_um", "cell_size_um", "mass_scaling_factor",
+                        "edge_flank_thrust_force_N_per_mm", "rake_friction_work_per_travel_N_per_mm",
+                        "edge_flank_friction_work_per_travel_N_per_mm", "rake_mean_slip_speed_m_per_s", "chip_thickness_ratio", "chip_thickness_um", "cell_size_um", "mass_scaling_factor",
                         "max_temperature_K", "chip_classification", "wall_time_s", "source_revision", "result_dir", "message"};
   for (const Condition& c : conditions) {
     if (c.origin.empty()) continue;
@@ -501,6 +502,9 @@ int run_validation(const ValidateOptions& o) {
                                format_number(c.result.tool_force_split.rake_friction_N_per_mm),
                                format_number(c.result.tool_force_split.edge_flank_cutting_N_per_mm),
                                format_number(c.result.tool_force_split.edge_flank_thrust_N_per_mm),
+                               format_number(c.result.tool_force_split.rake_friction_work_N_per_mm),
+                               format_number(c.result.tool_force_split.edge_flank_friction_work_N_per_mm),
+                               format_number(c.result.tool_force_split.rake_slip_speed_m_per_s),
                                format_number(c.result.chip_thickness_ratio), format_number(c.chip_thickness_um()),
                                format_number(c.result.cell_size_um), format_number(c.result.mass_scaling_factor),
                                format_number(c.result.max_temperature_K), c.result.chip_classification,

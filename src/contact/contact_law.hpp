@@ -68,6 +68,7 @@ struct ContactRecord {
   Vec2 normal = Vec2::Zero();   // rigid body's unit outward normal there
   Vec2 impulse = Vec2::Zero();  // momentum given to the material, N s per m of thickness
   bool sliding = false;         // Coulomb limit reached (slip goes on)
+  double friction_work = 0.0;   // frictional dissipation here in the step (the ledger's friction term), J/m
 };
 
 }  // namespace mpmcut

@@ -164,7 +164,7 @@ void RigidContact::apply_penalty(Particles& P, Grid& G, std::span<const ShapeFun
       });
       impulse += dp;
       friction_work += q;
-      records_.push_back({static_cast<int>(r), 1, x, normal, dp, c.sliding});
+      records_.push_back({static_cast<int>(r), 1, x, normal, dp, c.sliding, q});
     });
     book_contact_impulse(bodies[r], impulse, impulse.dot(vr), dt, energy);
     energy.friction += friction_work;
@@ -241,7 +241,6 @@ void RigidContact::apply(ContactPass pass, double dt, Grid& G, std::vector<Rigid
         if (accumulate_force) {
           const Vec2 dp = m * dv;  // momentum given to the material by the rigid body
           impulse += dp;
-          records_.push_back({static_cast<int>(r), pass == ContactPass::AfterP2G ? 0 : 1, xbar, normal, dp, cc.sliding});
           work += dp.dot(vr);
           // Frictional work = friction impulse x the slip that goes on (Coulomb force times slip
           // distance); sticking does no frictional work. It becomes heat in the deformable body at
@@ -251,6 +250,8 @@ void RigidContact::apply(ContactPass pass, double dt, Grid& G, std::vector<Rigid
           // it is not lost by the particles, so it is not counted as a dissipation (counting it
           // overstated friction heat and broke the energy balance of a cut by ~15%).
           const double q = m * cc.friction_dv * cc.slip_after;
+          records_.push_back(
+              {static_cast<int>(r), pass == ContactPass::AfterP2G ? 0 : 1, xbar, normal, dp, cc.sliding, q});
           friction_work += q;
           G.friction_heat[n] += heat_share_[r] * q;
           if (q > 0.0) heated_.add(i, j);

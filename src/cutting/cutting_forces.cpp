@@ -17,7 +17,7 @@ namespace mpmcut {
 
 namespace {
 constexpr double kPerMm = 1e-3;  // N/m -> N/mm
-constexpr int kStateSize = 24;  // doubles in the checkpoint state
+constexpr int kStateSize = 28;  // doubles in the checkpoint state
 
 std::vector<std::string> force_columns() {
   return {"time_s",
@@ -68,6 +68,8 @@ void CuttingForcesObserver::RakeSums::add(const RakeSums& o) {
   friction += o.friction;
   sliding_normal += o.sliding_normal;
   safeguard_normal += o.safeguard_normal;
+  friction_work += o.friction_work;
+  tool_friction_work += o.tool_friction_work;
 }
 
 void CuttingForcesObserver::after_step(const Simulation& sim) {
@@ -81,6 +83,7 @@ void CuttingForcesObserver::after_step(const Simulation& sim) {
   double length = 0.0;
   for (const ContactRecord& rec : sim.contact_records()) {
     if (rec.rigid_body != 0) continue;
+    step.tool_friction_work += rec.friction_work;
     const double dpn = rec.impulse.dot(rec.normal);  // > 0: pushes the material away from the tool
     if (dpn <= 0.0 || rec.normal.dot(f.normal) <= 0.0) continue;
     const double along = (rec.position - f.tip).dot(f.up);
@@ -88,6 +91,7 @@ void CuttingForcesObserver::after_step(const Simulation& sim) {
     if (along <= f.edge_radius || rec.normal.dot(f.normal) < 0.999) continue;  // edge arc, not the face
     step.normal += dpn;
     step.friction -= rec.impulse.dot(f.up);  // on the tool: + when the chip drags it up the face
+    step.friction_work += rec.friction_work;
     if (rec.sliding) step.sliding_normal += dpn;
     if (rec.pass == 2) step.safeguard_normal += dpn;
   }
@@ -137,28 +141,34 @@ std::string CuttingForcesObserver::checkpoint_state() const {
                                 a.time, a.length_time, a.normal, a.friction, a.sliding_normal, a.safeguard_normal,
                                 b.time, b.length_time, b.normal, b.friction, b.sliding_normal, b.safeguard_normal,
                                 last_contact_length_,
-                                steady_mid_time_, steady_mid_impulse_ ? 1.0 : 0.0, mid.x(), mid.y()};
+                                steady_mid_time_, steady_mid_impulse_ ? 1.0 : 0.0, mid.x(), mid.y(),
+                                a.friction_work, a.tool_friction_work, b.friction_work,
+                                friction_work_known_ ? b.tool_friction_work : -1.0};
   return std::string(reinterpret_cast<const char*>(v), sizeof v);
 }
 
 void CuttingForcesObserver::restore_checkpoint_state(std::string_view state) {
   // A checkpoint written before the rake-face sums (7 values) resumes with those sums at zero, one
-  // written before the window's midpoint (20 values) without the steadiness check.
+  // written before the window's midpoint (20 values) without the steadiness check, one written before
+  // the friction-work sums (24 values) without them (summary.json then leaves them out).
   double v[kStateSize] = {};
-  if (state.size() != sizeof v && state.size() != 7 * sizeof(double) && state.size() != 20 * sizeof(double))
+  if (state.size() != sizeof v && state.size() != 7 * sizeof(double) && state.size() != 20 * sizeof(double) &&
+      state.size() != 24 * sizeof(double))
     throw std::runtime_error("forces observer: checkpoint state has " + std::to_string(state.size()) +
                              " bytes, expected " + std::to_string(sizeof v));
   std::memcpy(v, state.data(), state.size());
-  row_sums_ = {v[7], v[8], v[9], v[10], v[11], v[12]};
-  steady_sums_ = {v[13], v[14], v[15], v[16], v[17], v[18]};
+  row_sums_ = {v[7], v[8], v[9], v[10], v[11], v[12], v[24], v[25]};
+  steady_sums_ = {v[13], v[14], v[15], v[16], v[17], v[18], v[26], std::max(v[27], 0.0)};
   last_contact_length_ = v[19];
   last_row_time_ = v[0];
   last_row_impulse_ = Vec2(v[1], v[2]);
   steady_start_time_ = v[3];
   steady_start_impulse_.reset();
   if (v[4] != 0.0) steady_start_impulse_ = Vec2(v[5], v[6]);
+  // An older state has no friction-work sums: they are complete only if its steady window had not begun.
+  friction_work_known_ = state.size() == sizeof v ? v[27] >= 0.0 : v[4] == 0.0;
   steady_mid_impulse_.reset();
-  if (state.size() == sizeof v) {
+  if (state.size() >= 24 * sizeof(double)) {
     steady_mid_time_ = v[20];
     if (v[21] != 0.0) steady_mid_impulse_ = Vec2(v[22], v[23]);
   } else if (steady_start_impulse_ && last_row_time_ >= steady_mid_time_) {
@@ -216,6 +226,21 @@ void CuttingForcesObserver::at_finish(const Simulation& sim, nlohmann::json& sum
           {"definition",
            "steady-window mean tool force less the flat rake face's normal and friction force (rake_face), in the "
            "cutting and thrust directions: what the edge arc and the flank carry"}};
+      // Where the frictional work is done: per unit tool travel (J/m per m = N/m), so that it compares with
+      // the friction force; its ratio to the friction force is the force-weighted slip speed.
+      if (friction_work_known_) {
+        const double travel = r.time * c_.cutting_speed;
+        summary["rake_face"]["friction_work_per_travel_N_per_mm"] = r.friction_work / travel * kPerMm;
+        summary["rake_face"]["mean_slip_speed_m_per_s"] = r.friction > 0.0 ? r.friction_work / r.friction : 0.0;
+        summary["edge_and_flank"]["friction_work_per_travel_N_per_mm"] =
+            (r.tool_friction_work - r.friction_work) / travel * kPerMm;
+        summary["rake_face"]["definition"] =
+            summary["rake_face"]["definition"].get<std::string>() +
+            ". friction_work_per_travel: the frictional dissipation on the face over the steady window divided by "
+            "the tool's travel in it (edge_and_flank: the tool's other frictional dissipation); mean_slip_speed: "
+            "that dissipation divided by the friction impulse, the friction-force-weighted slip speed of the chip "
+            "on the face (sticking counts as zero slip)";
+      }
     }
     summary["steady_window"] = {{"start_time_s", steady_start_time_},
                                 {"end_time_s", sim.time()},

@@ -57,9 +57,12 @@ class CuttingForcesObserver final : public RunObserver {
     double friction = 0.0;         // friction impulse along the rake face (chip dragging the tool up), N s/m
     double sliding_normal = 0.0;   // part of `normal` taken at nodes that slide (Coulomb limit)
     double safeguard_normal = 0.0; // part of `normal` from the particle safeguard (no friction there)
+    double friction_work = 0.0;    // frictional dissipation on the flat rake face, J/m
+    double tool_friction_work = 0.0;  // ... anywhere on the tool (rake face, edge arc, flank), J/m
     void add(const RakeSums& o);
   };
   RakeSums row_sums_, steady_sums_;
+  bool friction_work_known_ = true;  // false after resuming a checkpoint written before the friction-work sums
   double last_contact_length_ = 0.0;  // m, last step
 };
 

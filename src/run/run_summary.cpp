@@ -244,6 +244,10 @@ ToolForceSplit tool_force_split(const RunSummary& s) {
   ToolForceSplit t;
   t.rake_normal_N_per_mm = section_number(s.sections, "rake_face", "normal_force_N_per_mm");
   t.rake_friction_N_per_mm = section_number(s.sections, "rake_face", "friction_force_N_per_mm");
+  t.rake_friction_work_N_per_mm = section_number(s.sections, "rake_face", "friction_work_per_travel_N_per_mm");
+  t.edge_flank_friction_work_N_per_mm =
+      section_number(s.sections, "edge_and_flank", "friction_work_per_travel_N_per_mm");
+  t.rake_slip_speed_m_per_s = section_number(s.sections, "rake_face", "mean_slip_speed_m_per_s");
   const std::optional<double> rake_angle = section_number(s.sections, "cutting", "rake_angle_deg");
   if (t.rake_normal_N_per_mm && t.rake_friction_N_per_mm && rake_angle && s.mean_cutting_force_N_per_mm &&
       s.mean_thrust_force_N_per_mm) {

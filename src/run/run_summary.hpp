@@ -90,6 +90,9 @@ std::optional<double> mass_scaling_factor(const RunSummary& s);
 struct ToolForceSplit {
   std::optional<double> rake_normal_N_per_mm, rake_friction_N_per_mm;
   std::optional<double> edge_flank_cutting_N_per_mm, edge_flank_thrust_N_per_mm;
+  // Frictional work per unit tool travel on the rake face and on the rest of the tool (N/mm), and the
+  // rake face's friction-force-weighted slip speed (m/s); none in summaries written before them.
+  std::optional<double> rake_friction_work_N_per_mm, edge_flank_friction_work_N_per_mm, rake_slip_speed_m_per_s;
 };
 ToolForceSplit tool_force_split(const RunSummary& s);
 // steady_window.drift: the second half's mean force minus the first half's, % of the mean (Fc, Ft).

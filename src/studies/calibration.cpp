@@ -367,10 +367,13 @@ void Calibrator::write_results(const Evaluation& best, const std::vector<Conditi
                                  c_.global_evaluations, c_.global_algorithm, c_.local_algorithm, c_.seed)
                    : fmt::format("{} evaluations ({} only), seed {}", c_.evaluations, c_.local_algorithm, c_.seed);
   const std::string resolution =
-      c_.runs.quick ? "quick (cell = t0/4, 1 particle per cell, 4 cells of travel)"
-      : c_.runs.cells_per_edge_radius > 0.0
-          ? fmt::format("cell = min(t0/{}, r_n/{:g})", c_.runs.cells_per_feed, c_.runs.cells_per_edge_radius)
-          : fmt::format("cell = t0/{} (no edge-radius limit)", c_.runs.cells_per_feed);
+      (c_.runs.quick ? "quick (cell = t0/4, 1 particle per cell, 4 cells of travel)"
+       : c_.runs.cells_per_edge_radius > 0.0
+           ? fmt::format("cell = min(t0/{}, r_n/{:g})", c_.runs.cells_per_feed, c_.runs.cells_per_edge_radius)
+           : fmt::format("cell = t0/{} (no edge-radius limit)", c_.runs.cells_per_feed)) +
+      // The contact only when chosen, so that a configuration without it reports as before.
+      (c_.runs.contact_detection.empty() ? std::string()
+                                         : fmt::format(", {} contact", c_.runs.contact_detection));
 
   // The best set, ready to paste into a case file or materials/.
   const auto friction_index = [&]() -> std::optional<std::size_t> {

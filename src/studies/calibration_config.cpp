@@ -1,4 +1,5 @@
 // Reading and checking a calibration configuration (studies/calibration.hpp; docs/calibration.md).
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -94,6 +95,16 @@ CalibrationConfig read_calibration_config(const fs::path& file, std::string_view
     c.runs.friction = r->number("friction", c.runs.friction);
     r->check("friction", c.runs.friction >= 0.0 && c.runs.friction <= 2.0, "a Coulomb coefficient in [0, 2]",
              c.runs.friction);
+    // The contact of every run, as `validate --contact-detection` (empty: the preset's node detection, so
+    // that existing configurations write the same case files).
+    c.runs.contact_detection = r->string("contact_detection", "");
+    if (r->has("contact_detection")) {
+      const std::vector<std::string> names = contact_detection_names();
+      std::string allowed;
+      for (const std::string& n : names) allowed += (allowed.empty() ? "one of \"" : " | \"") + n + "\"";
+      if (std::find(names.begin(), names.end(), c.runs.contact_detection) == names.end())
+        r->fail("contact_detection", fmt::format("must be {}, got \"{}\"", allowed, c.runs.contact_detection));
+    }
     r->reject_unknown_keys();
   }
 

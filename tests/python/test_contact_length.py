@@ -15,7 +15,11 @@ A tiny coarse cut (25 um cells, 1 particle per cell, 0.1 mm of travel) at mu = 0
   flank feel only the material's normal push from ahead and below); at rake 0 rake normal + its Fc is the whole
   Fc and rake friction + its Ft the whole Ft;
 - steady_window.drift (second half's mean force minus the first half's, % of the mean) agrees with the same
-  difference computed from the rows of forces.csv (a sign or definition error would differ by its size).
+  difference computed from the rows of forces.csv (a sign or definition error would differ by its size);
+- the frictional work per unit travel on the rake face and on the edge and flank: both >= 0, their sum over the
+  steady window's travel is the energy ledger's friction work over the window (history.csv, node and penalty
+  contact), the rake face's mean slip speed is below the cutting speed (the chip, thicker than t0, flows up a
+  0-degree face slower than the tool moves), and everything is zero at mu = 0.
 """
 import csv
 import json
@@ -36,7 +40,7 @@ particles_per_cell = 1
 snapshots = 2
 friction = {mu}
 steady_start_fraction = 0.5
-"""
+{solver}"""
 
 
 def fail(msg):
@@ -44,11 +48,12 @@ def fail(msg):
     sys.exit(1)
 
 
-def run(binary, scratch, mu):
-    case = os.path.join(scratch, f"mu{mu}.toml")
+def run(binary, scratch, mu, detection=None):
+    name = f"mu{mu}" + (f"_{detection}" if detection else "")
+    case = os.path.join(scratch, name + ".toml")
     with open(case, "w") as f:
-        f.write(CASE.format(mu=mu))
-    out = os.path.join(scratch, f"mu{mu}")
+        f.write(CASE.format(mu=mu, solver=f'[solver]\ncontact_detection = "{detection}"\n' if detection else ""))
+    out = os.path.join(scratch, name)
     p = subprocess.run([binary, "run", case, "--out", out, "--force", "--threads", "1", "--no-progress",
                         "--no-plots"], capture_output=True, text=True, timeout=300)
     print(p.stdout, p.stderr, sep="\n")
@@ -58,7 +63,40 @@ def run(binary, scratch, mu):
         summary = json.load(f)
     with open(os.path.join(out, "forces.csv"), newline="") as f:
         rows = list(csv.DictReader(f))
+    with open(os.path.join(out, "history.csv"), newline="") as f:
+        summary["_history"] = list(csv.DictReader(f))
     return summary, rows
+
+
+def ledger_friction_work(history, start, end):
+    """The ledger's friction work (J/m) between two times, linear between history rows."""
+    ts = [float(r["time_s"]) for r in history]
+    ws = [float(r["friction_work_J_per_m"]) for r in history]
+
+    def at(t):
+        for i in range(1, len(ts)):
+            if ts[i] >= t:
+                return ws[i - 1] + (ws[i] - ws[i - 1]) * (t - ts[i - 1]) / (ts[i] - ts[i - 1])
+        return ws[-1]
+    return at(end) - at(start)
+
+
+def check_friction_work(summary, speed, label):
+    rake, rest = summary["rake_face"], summary["edge_and_flank"]
+    w = summary["steady_window"]
+    travel = w["end_tool_travel_m"] - w["start_tool_travel_m"]
+    per_travel = rake["friction_work_per_travel_N_per_mm"] + rest["friction_work_per_travel_N_per_mm"]
+    ledger = ledger_friction_work(summary["_history"], w["start_time_s"], w["end_time_s"]) / travel * 1e-3
+    print(f"{label}: friction work per travel: rake face {rake['friction_work_per_travel_N_per_mm']:.3f}, edge and "
+          f"flank {rest['friction_work_per_travel_N_per_mm']:.3f}, ledger {ledger:.3f} N/mm; rake mean slip speed "
+          f"{rake['mean_slip_speed_m_per_s']:.3f} m/s")
+    if rake["friction_work_per_travel_N_per_mm"] < 0 or rest["friction_work_per_travel_N_per_mm"] < 0:
+        fail(f"{label}: negative frictional work {rake}, {rest}")
+    # The history rows bracket the window's ends, where the work rate is nearly constant: a few per cent.
+    if abs(per_travel - ledger) > 0.03 * ledger:
+        fail(f"{label}: rake + edge and flank friction work {per_travel:.4f} N/mm vs the ledger's {ledger:.4f} N/mm")
+    if not 0.0 < rake["mean_slip_speed_m_per_s"] < speed:
+        fail(f"{label}: rake mean slip speed {rake['mean_slip_speed_m_per_s']} m/s not in (0, {speed}) m/s")
 
 
 def main(binary, scratch):
@@ -97,8 +135,13 @@ def main(binary, scratch):
         fail(f"forces.csv contact length mean {acc / max(total, 1e-30) * 1e6:.2f} um vs summary {length * 1e6:.2f} um")
 
     check_drift(summary, rows)
+    check_friction_work(summary, 20.0, "node contact")
+    check_friction_work(run(binary, scratch, 0.35, "penalty")[0], 20.0, "penalty contact")
 
     summary0, _ = run(binary, scratch, 0.0)
+    for part in ("rake_face", "edge_and_flank"):
+        if summary0[part]["friction_work_per_travel_N_per_mm"] != 0.0:
+            fail(f"mu = 0 but {part} friction work {summary0[part]['friction_work_per_travel_N_per_mm']} N/mm")
     # Zero up to round-off of the impulse's component along the face (1e-9 of the normal force).
     if abs(summary0["rake_face"]["friction_force_N_per_mm"]) > 1e-9 * summary0["rake_face"]["normal_force_N_per_mm"]:
         fail(f"mu = 0 but rake friction {summary0['rake_face']['friction_force_N_per_mm']} N/mm")

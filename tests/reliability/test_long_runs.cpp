@@ -9,6 +9,8 @@
 
 #include <algorithm>
 
+#include <nlohmann/json.hpp>
+
 #include "cli.hpp"
 
 namespace mpmcut::testing {
@@ -255,6 +257,38 @@ TEST_F(LongRuns, ResumeRefusesCompleteRunsChangedScenesAndNonResults) {
   r = resume("no_such_directory");
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("no such result directory"), std::string::npos) << r.output;
+}
+
+// A cut interrupted inside its steady window and resumed: the forces observer's sums (steady-window means, the
+// rake face's forces, slip speed and frictional work, the edge and flank's) travel in the checkpoint, so the
+// summary's tool results equal the uninterrupted run's to the last digit.
+TEST_F(LongRuns, CutResumedInsideItsSteadyWindowKeepsTheToolResults) {
+  write_file(case_file_, R"toml(
+title = "Reliability test: a tiny cut"
+[cutting]
+material = "ti64-johnson-1985"
+cutting_speed = 20.0
+uncut_chip_thickness = 0.1e-3
+cut_length = 100e-6
+cell_size = 25e-6
+particles_per_cell = 1
+snapshots = 2
+steady_start_fraction = 0.3
+)toml");
+  const CliResult ref = run("reference", {"--no-plots"});
+  ASSERT_EQ(ref.exit_code, 0) << ref.output;
+  const nlohmann::json expected = nlohmann::json::parse(read_file(out("reference") / "summary.json"));
+  const long steps = expected.at("steps").get<long>();
+  // Interrupt past the middle of the cut (the window starts at 30 % of it), at a checkpoint.
+  EXPECT_EQ(run_and_signal("interrupted", steps * 6 / 10, SIGINT), 130);
+  const CliResult r = resume("interrupted");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json actual = nlohmann::json::parse(read_file(out("interrupted") / "summary.json"));
+  ASSERT_TRUE(expected.contains("rake_face")) << expected.dump(2);
+  ASSERT_TRUE(expected["rake_face"].contains("friction_work_per_travel_N_per_mm")) << expected.dump(2);
+  for (const char* key : {"mean_cutting_force_N_per_mm", "mean_thrust_force_N_per_mm", "tool_chip_contact_length_m",
+                          "rake_face", "edge_and_flank", "steady_window"})
+    EXPECT_EQ(actual.at(key), expected.at(key)) << key;
 }
 
 // P2G is coloured by strips of grid rows in a fixed order and every sum over particles uses

@@ -9,6 +9,7 @@
 
 #include "io/input_error.hpp"
 #include "studies/calibration.hpp"
+#include "studies/measured_conditions.hpp"
 
 namespace mpmcut {
 namespace {
@@ -84,6 +85,28 @@ TEST(CalibrationConfig, BoundOutsideTheMaterialsValidRange) {
   const std::string e = error_of("name = \"fit\"\n[[parameter]]\nname = \"jc_n\"\nmin = -0.1\nmax = 0.5\n" + kData);
   EXPECT_NE(e.find("parameter[0].min"), std::string::npos) << e;
   EXPECT_NE(e.find("jc_n"), std::string::npos) << e;
+}
+
+// [runs] contact_detection reaches every run's case file, as validate --contact-detection; absent, the case
+// files have no [solver] table (so configurations written before the key run the same cases).
+TEST(CalibrationConfig, ContactDetectionReachesTheCaseFiles) {
+  const std::string base = "name = \"fit\"\n" + kParameter + kData;
+  const CuttingCondition condition{"h0.1mm_vc100mpmin", "forces", 100.0 / 60.0, 0.1, 34.4};
+  const CalibrationConfig node = read_calibration_config(write("node.toml", base), kMeasurements);
+  EXPECT_EQ(node.runs.contact_detection, "");
+  EXPECT_EQ(condition_case_text(condition, node.runs).find("contact_detection"), std::string::npos);
+
+  const CalibrationConfig penalty = read_calibration_config(
+      write("penalty.toml", base + "[runs]\ncontact_detection = \"penalty\"\n"), kMeasurements);
+  EXPECT_EQ(penalty.runs.contact_detection, "penalty");
+  const std::string text = condition_case_text(condition, penalty.runs);
+  EXPECT_NE(text.find("[solver]\ncontact_detection = \"penalty\""), std::string::npos) << text;
+
+  const std::string e = error_of(base + "[runs]\ncontact_detection = \"glue\"\n");
+  EXPECT_NE(e.find("calibration.toml:"), std::string::npos) << e;
+  EXPECT_NE(e.find("runs.contact_detection"), std::string::npos) << e;
+  EXPECT_NE(e.find("\"penalty\""), std::string::npos) << e;  // the allowed names are listed
+  EXPECT_NE(e.find("got \"glue\""), std::string::npos) << e;
 }
 
 TEST(CalibrationConfig, EmptyTrainingSet) {
