@@ -1,7 +1,8 @@
 """End to end: the tool-chip contact outputs of a cutting run (summary.json and forces.csv).
 
 usage: /usr/bin/python3 test_contact_length.py MPMCUT_BINARY SCRATCH_DIR
-A tiny coarse cut (25 um cells, 1 particle per cell, 0.1 mm of travel) at mu = 0.35 and at mu = 0. Checks:
+The tiny coarse cut of tests/support/cases/tiny_cut.toml (25 um cells, 1 particle per cell, 0.1 mm of travel) at
+mu = 0.35 and at mu = 0. Checks:
 - summary.json has tool_chip_contact_length_m and _mm (the same length in two units), a contact length of at
   least one cell and at most 4 t0 (the chip, 2-3 t0 thick, cannot touch the rake face higher up this early);
 - the rake-face friction/normal ratio is positive and at most mu: the nodal Coulomb law never gives a
@@ -28,19 +29,7 @@ import shutil
 import subprocess
 import sys
 
-CASE = """\
-title = "contact-length test: tiny Ti-6Al-4V cut"
-[cutting]
-material = "ti64-johnson-1985"
-cutting_speed = 20.0
-uncut_chip_thickness = 0.1e-3
-cut_length = 100e-6
-cell_size = 25e-6
-particles_per_cell = 1
-snapshots = 2
-friction = {mu}
-steady_start_fraction = 0.5
-{solver}"""
+CASE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support", "cases", "tiny_cut.toml")
 
 
 def fail(msg):
@@ -50,12 +39,12 @@ def fail(msg):
 
 def run(binary, scratch, mu, detection=None):
     name = f"mu{mu}" + (f"_{detection}" if detection else "")
-    case = os.path.join(scratch, name + ".toml")
-    with open(case, "w") as f:
-        f.write(CASE.format(mu=mu, solver=f'[solver]\ncontact_detection = "{detection}"\n' if detection else ""))
     out = os.path.join(scratch, name)
-    p = subprocess.run([binary, "run", case, "--out", out, "--force", "--threads", "1", "--no-progress",
-                        "--no-plots"], capture_output=True, text=True, timeout=300)
+    settings = ["--set", f"cutting.friction={mu}"]
+    if detection:
+        settings += ["--set", f'solver.contact_detection="{detection}"']
+    p = subprocess.run([binary, "run", CASE, "--out", out, "--force", "--threads", "1", "--no-progress",
+                        "--no-plots"] + settings, capture_output=True, text=True, timeout=300)
     print(p.stdout, p.stderr, sep="\n")
     if p.returncode != 0:
         fail(f"run exit status {p.returncode}")

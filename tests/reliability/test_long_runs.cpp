@@ -263,24 +263,15 @@ TEST_F(LongRuns, ResumeRefusesCompleteRunsChangedScenesAndNonResults) {
 // rake face's forces, slip speed and frictional work, the edge and flank's) travel in the checkpoint, so the
 // summary's tool results equal the uninterrupted run's to the last digit.
 TEST_F(LongRuns, CutResumedInsideItsSteadyWindowKeepsTheToolResults) {
-  write_file(case_file_, R"toml(
-title = "Reliability test: a tiny cut"
-[cutting]
-material = "ti64-johnson-1985"
-cutting_speed = 20.0
-uncut_chip_thickness = 0.1e-3
-cut_length = 100e-6
-cell_size = 25e-6
-particles_per_cell = 1
-snapshots = 2
-steady_start_fraction = 0.3
-)toml");
+  // The tiny cut's steady window starts at half of its travel.
+  fs::copy_file(fs::path(MPMCUT_TEST_DIR) / "support" / "cases" / "tiny_cut.toml", case_file_,
+                fs::copy_options::overwrite_existing);
   const CliResult ref = run("reference", {"--no-plots"});
   ASSERT_EQ(ref.exit_code, 0) << ref.output;
   const nlohmann::json expected = nlohmann::json::parse(read_file(out("reference") / "summary.json"));
   const long steps = expected.at("steps").get<long>();
-  // Interrupt past the middle of the cut (the window starts at 30 % of it), at a checkpoint.
-  EXPECT_EQ(run_and_signal("interrupted", steps * 6 / 10, SIGINT), 130);
+  // Interrupt inside the window, at a checkpoint past 70 % of the steps.
+  EXPECT_EQ(run_and_signal("interrupted", steps * 7 / 10, SIGINT), 130);
   const CliResult r = resume("interrupted");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const nlohmann::json actual = nlohmann::json::parse(read_file(out("interrupted") / "summary.json"));
