@@ -2,6 +2,7 @@
 // held at Ts from t = 0 follows T(x,t) = T0 + (Ts - T0) erfc(x / (2 sqrt(alpha t))).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "../support/scene_builders.hpp"
@@ -43,25 +44,46 @@ TEST(HeatConduction, ErrorFallsWithCellSize) {
   EXPECT_LT(max_error_vs_erfc(ShapeFunctionKind::UGimp, 100, 0.02), max_error_vs_erfc(ShapeFunctionKind::UGimp, 25, 0.02));
 }
 
-// Insulated everywhere: conduction only moves heat, the total m c T is conserved.
-TEST(HeatConduction, InsulatedBodyConservesHeat) {
+namespace {
+struct SlabTemperatures {
+  double heat_before, heat_after;  // sum of m T (c = 1)
+  double min, max;                 // K, over all particles at the end
+  double max_beyond_band;          // K, hottest particle with x > 0.5
+};
+
+// An insulated slab, hot (500 K) for x < 0.3 and at 300 K elsewhere, conducting until t_end; the
+// particles of the band 0.4 < x < 0.5 opened up to `band_stretch` times their volume (1 = intact).
+SlabTemperatures insulated_slab(double t_end, double band_stretch) {
   Scene s = heat_slab_scene(ShapeFunctionKind::UGimp, 50);
   s.thermal.left.reset();
   Simulation sim(s);
   auto& P = sim.particles();
-  double H0 = 0.0;
+  SlabTemperatures r{0.0, 0.0, 1e9, 0.0, 0.0};
   for (std::size_t p = 0; p < P.size(); ++p) {
-    P.temperature[p] = P.position[p].x() < 0.3 ? 500.0 : 300.0;
-    H0 += P.mass[p] * P.temperature[p];
+    const double x = P.position[p].x();
+    P.temperature[p] = x < 0.3 ? 500.0 : 300.0;
+    if (x > 0.4 && x < 0.5) {  // stretched across the band (V = det F V0 every step)
+      P.deformation_gradient[p](0, 0) = band_stretch;
+      P.volume[p] = band_stretch * P.initial_volume[p];
+    }
+    r.heat_before += P.mass[p] * P.temperature[p];
   }
-  while (sim.time() < 0.01) sim.step();
-  double H = 0.0, Tmax = 0.0;
+  while (sim.time() < t_end) sim.step();
   for (std::size_t p = 0; p < P.size(); ++p) {
-    H += P.mass[p] * P.temperature[p];
-    Tmax = std::max(Tmax, P.temperature[p]);
+    r.heat_after += P.mass[p] * P.temperature[p];
+    r.min = std::min(r.min, P.temperature[p]);
+    r.max = std::max(r.max, P.temperature[p]);
+    if (P.position[p].x() > 0.5) r.max_beyond_band = std::max(r.max_beyond_band, P.temperature[p]);
   }
-  EXPECT_NEAR(H, H0, 1e-10 * H0);
-  EXPECT_LT(Tmax, 499.0);  // heat actually flowed
+  return r;
+}
+}  // namespace
+
+// Insulated everywhere: conduction only moves heat, the total m c T is conserved.
+TEST(HeatConduction, InsulatedBodyConservesHeat) {
+  const SlabTemperatures r = insulated_slab(0.01, 1.0);
+  EXPECT_NEAR(r.heat_after, r.heat_before, 1e-10 * r.heat_before);
+  EXPECT_LT(r.max, 499.0);  // heat actually flowed
 }
 
 // A band of particles opened up to 25 times their volume, as crack opening leaves failed particles (the
@@ -71,30 +93,9 @@ TEST(HeatConduction, InsulatedBodyConservesHeat) {
 // the initial ones (here below 0 K within 25 steps; stable up to about 16 V0 in this 1D band). Insulated,
 // so the maximum principle bounds every temperature by the initial ones.
 TEST(HeatConduction, OpenedParticlesConductByTheirSolidAndStayInRange) {
-  Scene s = heat_slab_scene(ShapeFunctionKind::UGimp, 50);
-  s.thermal.left.reset();
-  Simulation sim(s);
-  auto& P = sim.particles();
-  double H0 = 0.0;
-  for (std::size_t p = 0; p < P.size(); ++p) {
-    const double x = P.position[p].x();
-    P.temperature[p] = x < 0.3 ? 500.0 : 300.0;
-    if (x > 0.4 && x < 0.5) {  // stretched 25-fold across the band (V = det F V0 every step)
-      P.deformation_gradient[p](0, 0) = 25.0;
-      P.volume[p] = 25.0 * P.initial_volume[p];
-    }
-    H0 += P.mass[p] * P.temperature[p];
-  }
-  while (sim.time() < 0.02) sim.step();
-  double H = 0.0, Tmin = 1e9, Tmax = 0.0, T_beyond = 0.0;
-  for (std::size_t p = 0; p < P.size(); ++p) {
-    H += P.mass[p] * P.temperature[p];
-    Tmin = std::min(Tmin, P.temperature[p]);
-    Tmax = std::max(Tmax, P.temperature[p]);
-    if (P.position[p].x() > 0.5) T_beyond = std::max(T_beyond, P.temperature[p]);
-  }
-  EXPECT_NEAR(H, H0, 1e-10 * H0);
-  EXPECT_GE(Tmin, 300.0 - 1e-9);
-  EXPECT_LE(Tmax, 500.0 + 1e-9);
-  EXPECT_GT(T_beyond, 301.0);  // heat crossed the opened band
+  const SlabTemperatures r = insulated_slab(0.02, 25.0);
+  EXPECT_NEAR(r.heat_after, r.heat_before, 1e-10 * r.heat_before);
+  EXPECT_GE(r.min, 300.0 - 1e-9);
+  EXPECT_LE(r.max, 500.0 + 1e-9);
+  EXPECT_GT(r.max_beyond_band, 301.0);  // heat crossed the opened band
 }
