@@ -21,7 +21,9 @@ void check_guards(const Particles& P, const Grid& grid, const Scene& scene, cons
                         std::isfinite(P.volume[p]);
     const Vec2 x = P.position[p];
     const bool inside = x.x() >= lo.x() && x.x() <= hi.x() && x.y() >= lo.y() && x.y() <= hi.y();
-    if (!finite || !inside) bad = std::max(bad, static_cast<long>(p));
+    // T <= 0 K is finite but no physics makes it: a broken heat update, not a result to write.
+    const bool above_zero = P.temperature[p] > 0.0;
+    if (!finite || !inside || !above_zero) bad = std::max(bad, static_cast<long>(p));
   }
   const auto where = [&](std::size_t p) {
     return fmt::format("step {}, time {:.6g} s, particle {} of body '{}' at ({:.6g}, {:.6g}) m", step, time, p,
@@ -38,6 +40,8 @@ void check_guards(const Particles& P, const Grid& grid, const Scene& scene, cons
       else if (!std::isfinite(P.temperature[p])) field = "temperature";
       else if (!std::isfinite(P.volume[p])) field = "volume";
       if (field) throw SimulationError(fmt::format("non-finite {} at {}", field, where(p)));
+      if (P.temperature[p] <= 0.0)
+        throw SimulationError(fmt::format("temperature {:.6g} K, at or below absolute zero, at {}", P.temperature[p], where(p)));
       const Vec2 x = P.position[p];
       if (x.x() < lo.x() || x.x() > hi.x() || x.y() < lo.y() || x.y() > hi.y())
         throw SimulationError(fmt::format("particle left the grid domain [{:.6g}, {:.6g}] x [{:.6g}, {:.6g}] m at {}",

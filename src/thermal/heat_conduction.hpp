@@ -49,8 +49,10 @@ class SubcycledConduction {
 
 // One explicit conduction update over dt: nodal temperatures (from P2G) and heat capacities, the
 // conductive nodal heat rate -sum V k gradS . gradT_p, fixed-temperature nodes, and temperature
-// increments (not values) back to the particles so the field is not smeared. `colouring` holds
-// this step's strips (particles not moved since P2G).
+// increments (not values) back to the particles so the field is not smeared. An increment that
+// would take a particle outside the range of the temperatures around it (the old ones of the
+// particles sharing its nodes, its nodes' new and sink temperatures) is cut back to it, and the heat
+// cut is taken from the particles that share the nodes (conservative). `colouring` holds this step's strips (particles not moved since P2G).
 void conduct_heat(Particles& particles, Grid& grid, std::span<const ShapeFunction> body_shapes,
                   const std::vector<MaterialParameters>& materials, const StripColouring& colouring, bool parallel,
                   double dt);

@@ -251,3 +251,21 @@ TEST(Guards, NaNIsReported) {
     EXPECT_NE(std::string(e.what()).find("non-finite"), std::string::npos) << e.what();
   }
 }
+
+// A finite temperature at or below 0 K is no result either (conduction's increments once made -505 K).
+TEST(Guards, TemperatureAtOrBelowAbsoluteZeroIsReported) {
+  Scene s;
+  s.grid = {0.1, Vec2(0, 0), Vec2(1, 1)};
+  s.materials.push_back(elastic_material("m", 1e3, 0.3, 10.0));
+  s.bodies.push_back(rectangle_body("block", "m", Vec2(0.3, 0.3), Vec2(0.6, 0.6), 2));
+  Simulation sim(s);
+  sim.particles().temperature[5] = -10.0;
+  try {
+    sim.step();
+    FAIL() << "expected SimulationError";
+  } catch (const SimulationError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("absolute zero"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("-10 K"), std::string::npos) << msg;
+  }
+}
