@@ -237,12 +237,19 @@ TEST(Guards, ParticleLeavingTheGridIsReported) {
   }
 }
 
-TEST(Guards, NaNIsReported) {
+namespace {
+// A block at rest in the middle of the grid, for guards fed one bad particle value.
+Scene resting_block_scene() {
   Scene s;
   s.grid = {0.1, Vec2(0, 0), Vec2(1, 1)};
   s.materials.push_back(elastic_material("m", 1e3, 0.3, 10.0));
   s.bodies.push_back(rectangle_body("block", "m", Vec2(0.3, 0.3), Vec2(0.6, 0.6), 2));
-  Simulation sim(s);
+  return s;
+}
+}  // namespace
+
+TEST(Guards, NaNIsReported) {
+  Simulation sim(resting_block_scene());
   sim.particles().stress[5].xy = std::nan("");
   try {
     sim.step();
@@ -254,11 +261,7 @@ TEST(Guards, NaNIsReported) {
 
 // A finite temperature at or below 0 K is no result either (conduction's increments once made -505 K).
 TEST(Guards, TemperatureAtOrBelowAbsoluteZeroIsReported) {
-  Scene s;
-  s.grid = {0.1, Vec2(0, 0), Vec2(1, 1)};
-  s.materials.push_back(elastic_material("m", 1e3, 0.3, 10.0));
-  s.bodies.push_back(rectangle_body("block", "m", Vec2(0.3, 0.3), Vec2(0.6, 0.6), 2));
-  Simulation sim(s);
+  Simulation sim(resting_block_scene());
   sim.particles().temperature[5] = -10.0;
   try {
     sim.step();
