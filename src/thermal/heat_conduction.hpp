@@ -52,7 +52,8 @@ class SubcycledConduction {
 // increments (not values) back to the particles so the field is not smeared. An increment that
 // would take a particle outside the range of the temperatures around it (the old ones of the
 // particles sharing its nodes, its nodes' new and sink temperatures) is cut back to it, and the heat
-// cut is taken from the particles that share the nodes (conservative). `colouring` holds this step's strips (particles not moved since P2G).
+// cut is taken from the particles that share the nodes (conservative). `colouring` holds this
+// step's strips (particles not moved since P2G).
 void conduct_heat(Particles& particles, Grid& grid, std::span<const ShapeFunction> body_shapes,
                   const std::vector<MaterialParameters>& materials, const StripColouring& colouring, bool parallel,
                   double dt);
