@@ -183,7 +183,7 @@ void Simulation::heat_particles(double dt) {
     // that flows into them leaves the material; like the heat through fixed-temperature boundaries it
     // is not part of the mechanical energy ledger.
     if (heat_transfer_) mark_heat_sinks(grid_, scene_.rigid_bodies, contact_, state_.rigid_bodies);
-    conduct_heat(particles_, grid_, shapes_, scene_.materials, colouring_, parallel_, *elapsed);
+    conduct_heat(particles_, grid_, shapes_, scene_.materials, colouring_, parallel_, *elapsed, conduction_scratch_);
   }
 }
 

@@ -108,6 +108,7 @@ class Simulation {
   std::vector<ConstitutiveIncrement> increments_;
   std::vector<double> deposited_heat_;  // frictional heat taken by each particle this step, J/m
   std::vector<double> transfer_loss_;   // kinetic energy the FLIP/PIC blend took from each particle, J/m
+  ConductionScratch conduction_scratch_;
 };
 
 }  // namespace mpmcut

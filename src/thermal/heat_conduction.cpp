@@ -29,12 +29,14 @@ std::optional<double> SubcycledConduction::end_step(ConductionSubcycle& s, doubl
 
 void conduct_heat(Particles& P, Grid& G, std::span<const ShapeFunction> body_shapes,
                   const std::vector<MaterialParameters>& materials, const StripColouring& colouring, bool parallel,
-                  double dt) {
+                  double dt, ConductionScratch& scratch) {
   const std::size_t n = P.size();
   const std::size_t nn = G.node_count();
   // The range of the old particle temperatures at each node (for the bound below).
-  std::vector<double> range_lo(nn, std::numeric_limits<double>::infinity());
-  std::vector<double> range_hi(nn, -std::numeric_limits<double>::infinity());
+  std::vector<double>& range_lo = scratch.node_low;
+  std::vector<double>& range_hi = scratch.node_high;
+  range_lo.assign(nn, std::numeric_limits<double>::infinity());
+  range_hi.assign(nn, -std::numeric_limits<double>::infinity());
   // Particle temperature gradient from the nodal temperatures, and its conductive flux scattered
   // back (the nodal temperatures are only read here, the heat rates only written).
   colouring.for_each(parallel, [&](std::size_t p) {
@@ -89,7 +91,8 @@ void conduct_heat(Particles& P, Grid& G, std::span<const ShapeFunction> body_sha
   // fixed-temperature node are not bounded: the node resets their field every update, and pinning
   // the ones that overshoot it at its value puts its heat a cell too deep (erfc test: the slab's
   // largest error 2.0 -> 3.3 % at 100 cells, 0.08 -> 0.37 % beyond 3 cells from the face).
-  std::vector<double> cut_heat(n, 0.0);  // heat added by the bound, J per particle (per unit depth)
+  std::vector<double>& cut_heat = scratch.cut_heat;  // heat added by the bound, J per particle (per unit depth)
+  cut_heat.assign(n, 0.0);
   int any_cut = 0;
 #pragma omp parallel for schedule(static) if (parallel) reduction(| : any_cut)
   for (std::size_t p = 0; p < n; ++p) {

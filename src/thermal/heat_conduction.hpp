@@ -47,6 +47,14 @@ class SubcycledConduction {
   double limit_ = 0.0;
 };
 
+// Storage that conduct_heat reuses from one update to the next (resized on use): the per-node
+// range of old particle temperatures and the per-particle heat cut by the bound.
+struct ConductionScratch {
+  std::vector<double> node_low;   // K, then J/m (the nodal shares of the cut heat)
+  std::vector<double> node_high;  // K, then J/(K m) (the uncut particles' heat capacity)
+  std::vector<double> cut_heat;   // J/m per particle
+};
+
 // One explicit conduction update over dt: nodal temperatures (from P2G) and heat capacities, the
 // conductive nodal heat rate -sum V k gradS . gradT_p, fixed-temperature nodes, and temperature
 // increments (not values) back to the particles so the field is not smeared. An increment that
@@ -56,6 +64,6 @@ class SubcycledConduction {
 // step's strips (particles not moved since P2G).
 void conduct_heat(Particles& particles, Grid& grid, std::span<const ShapeFunction> body_shapes,
                   const std::vector<MaterialParameters>& materials, const StripColouring& colouring, bool parallel,
-                  double dt);
+                  double dt, ConductionScratch& scratch);
 
 }  // namespace mpmcut
