@@ -4,15 +4,16 @@
 A sensitivity study runs some measured conditions of the matrix with one thing changed (a tool option, a
 material set) and keeps each run's record, RECORDS/<variant>/<condition>/{scene.toml,summary.json}. This
 script puts every such run next to the matrix's own record of the same condition
-(docs/results/validation_matrix/records/<condition>, variant "matrix") and the measured means, and writes
+(docs/results/validation_matrix/records/<condition>, or --matrix DIR's, variant "matrix") and the measured means
+(from that matrix's validation.csv), and writes
 PREFIX.csv (every column) and PREFIX.md (the --columns, then the least-squares speed trend of Fc for each
 variant run at 2 or more speeds, beside the matrix and the measurement at the same speeds).
 
 What each run had is read from its scene.toml: the material (the [[material]] the workpiece used, and the
-library set it derives from) and the tool's thermal settings ([[rigid_body]] friction_heat_share,
-heat_transfer_coefficient, temperature).
+library set it derives from), the tool's Coulomb coefficient and its thermal settings ([[rigid_body]] friction,
+friction_heat_share, heat_transfer_coefficient, temperature).
 
-usage: /usr/bin/python3 tools/compare_variants.py RECORDS PREFIX [--columns a,b,c]
+usage: /usr/bin/python3 tools/compare_variants.py RECORDS PREFIX [--matrix DIR] [--columns a,b,c]
 """
 import argparse
 import csv
@@ -26,10 +27,10 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 MATRIX = ROOT / "docs" / "results" / "validation_matrix"
 
 
-def measured():
+def measured(matrix):
     """Measured means by (h mm, speed m/min) from the matrix report: Fc and Ft (N/mm, b = 1 mm assumed), t_c (um)."""
     out = {}
-    for r in csv.DictReader(open(MATRIX / "validation.csv")):
+    for r in csv.DictReader(open(matrix / "validation.csv")):
         m = re.match(r"h = ([0-9.]+) mm, vc = ([0-9.]+) m/min", r["condition"])
         if m and r["quantity"] in ("Fc", "Ft", "t_c") and r["measured_mean"]:
             out.setdefault((float(m[1]), float(m[2])), {})[r["quantity"]] = float(r["measured_mean"])
@@ -61,6 +62,7 @@ def row(variant, run_dir, meas_by_condition):
         "speed_m_per_min": round(d["cutting"]["cutting_speed_m_per_min"], 1),
         "material": material,
         "material_library_set": library,
+        "friction": tool.get("friction", 0.0),
         "friction_heat_share": tool.get("friction_heat_share", 1.0),
         "tool_heat_transfer_coefficient_W_per_m2K": htc,
         "tool_temperature_K": tool.get("temperature", 298.0) if htc > 0 else "",
@@ -98,15 +100,18 @@ def main():
     ap.add_argument("--columns", default="speed_m_per_min,variant,Fc_N_per_mm,Fc_error_percent,Ft_N_per_mm,"
                     "Ft_error_percent,Ft_over_Fc,chip_thickness_um,measured_Fc_Ft_tc",
                     help="the columns of PREFIX.md, comma-separated")
+    ap.add_argument("--matrix", type=pathlib.Path, default=MATRIX,
+                    help="the validation study whose records/ and validation.csv are the reference "
+                    "(default docs/results/validation_matrix)")
     ap.add_argument("--min-trend-speeds", type=int, default=2,
                     help="speeds a variant needs for its row of the trend table (default 2)")
     a = ap.parse_args()
-    meas = measured()
+    meas = measured(a.matrix)
     rows = []
     for variant_dir in sorted(p for p in a.records.iterdir() if p.is_dir()):
         for run_dir in sorted(p for p in variant_dir.iterdir() if (p / "summary.json").exists()):
             if not any(r["condition"] == run_dir.name and r["variant"] == "matrix" for r in rows):
-                rows.append(row("matrix", MATRIX / "records" / run_dir.name, meas))
+                rows.append(row("matrix", a.matrix / "records" / run_dir.name, meas))
             rows.append(row(variant_dir.name, run_dir, meas))
     if not rows:
         raise SystemExit(f"compare_variants: no complete runs under {a.records}/<variant>/<condition>/")
