@@ -285,6 +285,7 @@ int list_conditions(const std::vector<Condition>& conditions, const fs::path& ou
                            "f_mass", "particles", "steps", "Gpart·st", "core_h", "in OUT");
   double total_particle_steps = 0, total_to_run = 0;
   int n = 0, complete = 0;
+  std::vector<RunCostObservation> observed;  // what the complete ones took against their estimate
   for (const Condition& c : conditions) {
     if (!c.selected) continue;
     const fs::path case_file = out / "cases" / (c.id + ".toml");
@@ -301,6 +302,11 @@ int list_conditions(const std::vector<Condition>& conditions, const fs::path& ou
     total_particle_steps += ps;
     if (existing != ExistingRun::Complete) total_to_run += ps;
     complete += existing == ExistingRun::Complete;
+    if (existing == ExistingRun::Complete) {
+      const CaseResult done = read_case_result(recorded ? fs::path(o.records_dir) / c.id : out / c.id, {}, 0);
+      if (done.steps && done.core_seconds_per_particle_step)
+        observed.push_back({cost.steps, *done.steps, *done.core_seconds_per_particle_step});
+    }
     ++n;
     const auto& cut = *condition.cutting;
     std::cout << fmt::format("{:<36} {:>6} {:>6g} {:>8g} {:>6g} {:>10} {:>7.3g} {:>7.3g} {:>7.3g} {:>6.3g} {:>9} {:>10.3g} "
@@ -316,6 +322,13 @@ int list_conditions(const std::vector<Condition>& conditions, const fs::path& ou
       "case files in {})\n",
       n, complete, out.string(), o.records_dir.empty() ? "" : " or --records " + o.records_dir, total_particle_steps * 1e-9, total_particle_steps * kCoreSecondsPerParticleStep / 3600.0,
       total_to_run * kCoreSecondsPerParticleStep / 3600.0, kCoreSecondsPerParticleStep, (out / "cases").string());
+  if (const auto fix = observed_cost_correction(observed))
+    std::cout << fmt::format(
+        "Corrected by the {} complete run(s) listed (steps x {:.2f} of the estimate, median; {:.2f}-{:.2f}; {:.2g} "
+        "core-s per particle-step, median, on the machine and load they ran with): about {:.3g} core-hours still "
+        "to run\n",
+        fix->runs, fix->step_ratio, fix->step_ratio_min, fix->step_ratio_max, fix->core_seconds_per_particle_step,
+        fix->core_hours(total_to_run));
   return 0;
 }
 

@@ -231,6 +231,8 @@ CaseResult read_case_result(const fs::path& dir, const fs::path& log_file, int e
   const auto finite = [](double x) { return std::isfinite(x) ? std::optional<double>(x) : std::nullopt; };
   r.max_temperature_K = finite(s.max_temperature_K);
   r.wall_time_s = finite(s.wall_time_s);
+  if (s.steps > 0) r.steps = static_cast<double>(s.steps);
+  if (s.threads > 0 && s.particle_steps_per_s > 0.0) r.core_seconds_per_particle_step = s.threads / s.particle_steps_per_s;
   if (s.cell_size_m > 0.0) r.cell_size_um = s.cell_size_m * 1e6;
   r.mass_scaling_factor = mass_scaling_factor(s);
   r.tool_force_split = tool_force_split(s);

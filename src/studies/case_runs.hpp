@@ -46,6 +46,8 @@ struct CaseResult {
   std::optional<double> segmentation_degree, pitch_um, frequency_kHz;
   std::optional<double> chip_thickness_ratio;  // r = t0 / t_c from the chip analysis
   std::optional<double> wall_time_s;
+  std::optional<double> steps;                           // explicit steps the run took
+  std::optional<double> core_seconds_per_particle_step;  // threads / particle_steps_per_s (whole wall time)
   std::optional<double> cell_size_um, mass_scaling_factor;
   ToolForceSplit tool_force_split;  // rake face (normal, friction) and the rest, edge arc + flank (N/mm)
   // Energy ledger at the end (summary.json energy_J_per_m): the tool's work and where it went; the

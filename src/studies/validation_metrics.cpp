@@ -60,4 +60,30 @@ RunCost estimate_run_cost(const Scene& scene) {
   return c;
 }
 
+namespace {
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+}  // namespace
+
+std::optional<RunCostCorrection> observed_cost_correction(const std::vector<RunCostObservation>& runs) {
+  std::vector<double> ratios, costs;
+  const auto usable = [](double x) { return std::isfinite(x) && x > 0.0; };
+  for (const RunCostObservation& r : runs) {
+    if (!usable(r.estimated_steps) || !usable(r.steps) || !usable(r.core_seconds_per_particle_step)) continue;
+    ratios.push_back(r.steps / r.estimated_steps);
+    costs.push_back(r.core_seconds_per_particle_step);
+  }
+  if (ratios.empty()) return std::nullopt;
+  RunCostCorrection c;
+  c.runs = static_cast<int>(ratios.size());
+  c.step_ratio = median(ratios);
+  c.step_ratio_min = *std::min_element(ratios.begin(), ratios.end());
+  c.step_ratio_max = *std::max_element(ratios.begin(), ratios.end());
+  c.core_seconds_per_particle_step = median(costs);
+  return c;
+}
+
 }  // namespace mpmcut

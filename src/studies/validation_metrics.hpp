@@ -51,4 +51,27 @@ RunCost estimate_run_cost(const Scene& scene);
 // magnitude, not a benchmark.
 inline constexpr double kCoreSecondsPerParticleStep = 0.35e-6;
 
+// What one complete run of a study took against its estimate (estimate_run_cost): its steps, and its cost
+// per particle-step, threads / (summary.json particle_steps_per_s, over its whole wall time).
+struct RunCostObservation {
+  double estimated_steps = 0.0;
+  double steps = 0.0;
+  double core_seconds_per_particle_step = 0.0;
+};
+// The estimate corrected by the complete runs of the same study on this machine: the median ratio of actual
+// to estimated steps (cracked particles compressed again shorten the step at fine cells: 1.35 at 1 um) and
+// the median core-seconds per particle-step (two runs on two cores share the memory bandwidth). Medians, so
+// that one odd run does not move it. None without a usable observation (non-positive or non-finite ones are
+// left out).
+struct RunCostCorrection {
+  int runs = 0;
+  double step_ratio = 1.0, step_ratio_min = 1.0, step_ratio_max = 1.0;  // actual / estimated steps, -
+  double core_seconds_per_particle_step = kCoreSecondsPerParticleStep;    // s
+  // Core-hours of `particle_steps` estimated particle-steps, corrected.
+  double core_hours(double particle_steps) const {
+    return particle_steps * step_ratio * core_seconds_per_particle_step / 3600.0;
+  }
+};
+std::optional<RunCostCorrection> observed_cost_correction(const std::vector<RunCostObservation>& runs);
+
 }  // namespace mpmcut

@@ -1,5 +1,5 @@
 // The pure arithmetic of `mpmcut validate`: the resolution rule of the measured conditions, the tool travel
-// and workpiece height rules, the speed-trend slope and the error summary.
+// and workpiece height rules, the speed-trend slope, the error summary and the cost estimate's correction.
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -84,6 +84,29 @@ TEST(ValidationErrors, MeanAndWorstOfAbsoluteRelativeErrors) {
   EXPECT_NEAR(s.worst_abs, 0.3, 1e-15);
   EXPECT_EQ(s.worst_index, 2);
   EXPECT_EQ(summarize_errors({}).count, 0);
+}
+
+// The corrected estimate takes the medians of what complete runs took (steps against the estimate, core-s per
+// particle-step), so one odd run does not move it; unusable observations are left out.
+TEST(ValidationCost, CorrectionFromCompleteRunsIsTheMedian) {
+  EXPECT_FALSE(observed_cost_correction({}).has_value());
+  EXPECT_FALSE(observed_cost_correction({{0.0, 100.0, 1e-6}, {100.0, NAN, 1e-6}}).has_value());
+  // Ratios 1.1, 1.35, 3.0 (odd one); costs 0.4, 0.5, 0.53 us; one unusable run (no rate).
+  const auto c = observed_cost_correction(
+      {{1000.0, 1100.0, 0.4e-6}, {1000.0, 1350.0, 0.53e-6}, {1000.0, 3000.0, 0.5e-6}, {1000.0, 1200.0, 0.0}});
+  ASSERT_TRUE(c.has_value());
+  EXPECT_EQ(c->runs, 3);
+  EXPECT_NEAR(c->step_ratio, 1.35, 1e-12);
+  EXPECT_NEAR(c->step_ratio_min, 1.1, 1e-12);
+  EXPECT_NEAR(c->step_ratio_max, 3.0, 1e-12);
+  EXPECT_NEAR(c->core_seconds_per_particle_step, 0.5e-6, 1e-18);
+  // 1e10 estimated particle-steps: 1.35e10 actual at 0.5 us = 6750 core-s = 1.875 core-h.
+  EXPECT_NEAR(c->core_hours(1e10), 1.875, 1e-9);
+  // An even count takes the mean of the middle two.
+  const auto even = observed_cost_correction({{1000.0, 1000.0, 0.2e-6}, {1000.0, 2000.0, 0.4e-6}});
+  ASSERT_TRUE(even.has_value());
+  EXPECT_NEAR(even->step_ratio, 1.5, 1e-12);
+  EXPECT_NEAR(even->core_seconds_per_particle_step, 0.3e-6, 1e-18);
 }
 
 }  // namespace
