@@ -64,7 +64,11 @@ pid_t spawn_child(const std::string& exe, const ChildRun& run) {
   }
   signal(SIGINT, SIG_DFL);
   signal(SIGTERM, SIG_DFL);
-  execv(c_argv[0], c_argv.data());
+  // The program this study started as, even if its file was replaced since (a rebuild relinks
+  // build/mpmcut under a running study): /proc/self/exe is the running image, not the path. argv[0]
+  // keeps the readable path for ps and the logs.
+  execv("/proc/self/exe", c_argv.data());
+  execv(c_argv[0], c_argv.data());  // no /proc: the path
   _exit(127);
 }
 

@@ -25,7 +25,8 @@ struct ChildRun {
   std::function<void(const ChildRun&)> on_finished;
 };
 
-// Runs the children, at most `jobs` at a time, each as /proc/self/exe in its own process group.
+// Runs the children, at most `jobs` at a time, each as /proc/self/exe in its own process group: the
+// program the study was started as, even if its file is replaced (rebuilt) while the study runs.
 // SIGINT/SIGTERM to this process are passed on once to the running children (which checkpoint and stop);
 // a second one kills them. Returns false if interrupted (children not started keep exit_code -1).
 bool run_children(std::vector<ChildRun>& runs, int jobs, bool print_progress);

@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <fcntl.h>
 #include <filesystem>
@@ -37,6 +38,7 @@ inline void write_file(const fs::path& p, const std::string& text) {
 struct SpawnOptions {
   fs::path log;                    // stdout and stderr go here
   long file_size_limit_bytes = 0;  // RLIMIT_FSIZE in the child; 0 = none
+  fs::path program = MPMCUT_BINARY;  // e.g. a copy of it
 };
 
 // Starts `mpmcut args...`; returns the child's pid.
@@ -57,7 +59,7 @@ inline pid_t spawn_mpmcut(const std::vector<std::string>& args, const SpawnOptio
     // Threads that wait sleep instead of spinning: the tests share a small, busy machine.
     ::setenv("OMP_WAIT_POLICY", "PASSIVE", 1);
     std::vector<char*> argv;
-    std::string program = MPMCUT_BINARY;
+    std::string program = options.program.string();
     argv.push_back(program.data());
     std::vector<std::string> copy = args;
     for (std::string& a : copy) argv.push_back(a.data());
@@ -115,6 +117,12 @@ inline long latest_checkpoint_step(const fs::path& result_dir) {
   const auto a = name.find('_'), b = name.find(".bin");
   if (a == std::string::npos || b == std::string::npos || b <= a + 1) return -1;
   return std::stol(name.substr(a + 1, b - a - 1));
+}
+
+// The number of rows in a run's history.csv (one per step of these cases): > 1 once it steps.
+inline std::size_t history_rows(const fs::path& run_dir) {
+  const std::string h = read_file(run_dir / "history.csv");
+  return static_cast<std::size_t>(std::count(h.begin(), h.end(), '\n'));
 }
 
 inline std::string summary_status(const fs::path& result_dir) {

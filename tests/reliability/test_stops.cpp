@@ -73,12 +73,6 @@ int exit_within(pid_t pid, double seconds) {
   return wait_exit_code(pid);
 }
 
-// The number of rows in a run's history.csv (one per step of these cases): > 1 once it steps.
-std::size_t history_rows(const fs::path& run_dir) {
-  const std::string h = read_file(run_dir / "history.csv");
-  return static_cast<std::size_t>(std::count(h.begin(), h.end(), '\n'));
-}
-
 // A stop at any moment of a run, from the first instruction of main to the last write: the
 // program always ends within 5 s, with 0 (it had finished) or 130, and a directory whose
 // summary says "complete" only when the run is (130 with a complete run only for a signal after
