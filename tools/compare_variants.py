@@ -10,8 +10,8 @@ PREFIX.csv (every column) and PREFIX.md (the --columns, then the least-squares s
 variant run at 2 or more speeds, beside the matrix and the measurement at the same speeds).
 
 What each run had is read from its scene.toml: the material (the [[material]] the workpiece used, and the
-library set it derives from), the tool's Coulomb coefficient and its thermal settings ([[rigid_body]] friction,
-friction_heat_share, heat_transfer_coefficient, temperature).
+library set it derives from), whether heat is conducted ([thermal] conduction), the tool's Coulomb coefficient and
+its thermal settings ([[rigid_body]] friction, friction_heat_share, heat_transfer_coefficient, temperature).
 
 usage: /usr/bin/python3 tools/compare_variants.py RECORDS PREFIX [--matrix DIR] [--columns a,b,c]
 """
@@ -63,6 +63,7 @@ def row(variant, run_dir, meas_by_condition):
         "material": material,
         "material_library_set": library,
         "friction": tool.get("friction", 0.0),
+        "conduction": scene.get("thermal", {}).get("conduction", False),
         "friction_heat_share": tool.get("friction_heat_share", 1.0),
         "tool_heat_transfer_coefficient_W_per_m2K": htc,
         "tool_temperature_K": tool.get("temperature", 298.0) if htc > 0 else "",
@@ -77,6 +78,10 @@ def row(variant, run_dir, meas_by_condition):
         "measured_Fc_Ft_tc": "{:g} / {:g} / {:g}".format(meas["Fc"], meas["Ft"], meas["t_c"]) if len(meas) == 3 else "",
         "tool_chip_interface_max_K": round(t["tool_chip_interface"]["max_K"]),
         "primary_shear_zone_max_K": round(t["primary_shear_zone"]["max_K"]),
+        "rake_normal_N_per_mm": round(rf["normal_force_N_per_mm"], 1),
+        "rake_friction_N_per_mm": round(rf["friction_force_N_per_mm"], 1),
+        # Older records have no edge-and-flank split (blank).
+        "edge_flank_cutting_N_per_mm": round(d["edge_and_flank"]["cutting_force_N_per_mm"], 1) if "edge_and_flank" in d else "",
         "rake_friction_to_normal": round(rf["friction_to_normal_ratio"], 3),
         "rake_sliding_share_of_normal": round(rf["sliding_share_of_normal_force"], 2),
         "contact_length_um": round(d["tool_chip_contact_length_mm"] * 1e3),
