@@ -7,7 +7,8 @@ script puts every such run next to the matrix's own record of the same condition
 (docs/results/validation_matrix/records/<condition>, or --matrix DIR's, variant "matrix") and the measured means
 (from that matrix's validation.csv), and writes
 PREFIX.csv (every column) and PREFIX.md (the --columns, then the least-squares speed trend of Fc for each
-variant run at 2 or more speeds, beside the matrix and the measurement at the same speeds).
+variant and uncut chip thickness run at 2 or more speeds, beside the matrix and the measurement at the same
+speeds).
 
 What each run had is read from its scene.toml: the material (the [[material]] the workpiece used, and the
 library set it derives from), whether heat is conducted ([thermal] conduction), the tool's Coulomb coefficient and
@@ -59,6 +60,7 @@ def row(variant, run_dir, meas_by_condition):
     return {
         "condition": run_dir.name,
         "variant": variant,
+        "h_mm": round(d["cutting"]["uncut_chip_thickness_m"] * 1e3, 4),
         "speed_m_per_min": round(d["cutting"]["cutting_speed_m_per_min"], 1),
         "material": material,
         "material_library_set": library,
@@ -120,7 +122,7 @@ def main():
             rows.append(row(variant_dir.name, run_dir, meas))
     if not rows:
         raise SystemExit(f"compare_variants: no complete runs under {a.records}/<variant>/<condition>/")
-    rows.sort(key=lambda r: (r["speed_m_per_min"], r["variant"] != "matrix", r["variant"]))
+    rows.sort(key=lambda r: (r["h_mm"], r["speed_m_per_min"], r["variant"] != "matrix", r["variant"]))
     with open(a.prefix.with_suffix(".csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
         w.writeheader()
@@ -133,16 +135,18 @@ def main():
         f.write("| " + " | ".join(cols) + " |\n|" + "---|" * len(cols) + "\n")
         for r in rows:
             f.write("| " + " | ".join(str(r[c]) for c in cols) + " |\n")
-        f.write("\n| variant | speeds (m/min) | Fc slope, variant | Fc slope, matrix | Fc slope, measured |\n"
-                "|---|---|---|---|---|\n")
-        for variant in sorted({r["variant"] for r in rows} - {"matrix"}):
-            speeds = sorted({r["speed_m_per_min"] for r in rows if r["variant"] == variant})
+        # The speed trend at one uncut chip thickness: a variant's runs at other thicknesses are not in it.
+        f.write("\n| variant | h (mm) | speeds (m/min) | Fc slope, variant | Fc slope, matrix | Fc slope, measured |\n"
+                "|---|---|---|---|---|---|\n")
+        for variant, h in sorted({(r["variant"], r["h_mm"]) for r in rows if r["variant"] != "matrix"}):
+            at_h = [r for r in rows if r["h_mm"] == h]
+            speeds = sorted({r["speed_m_per_min"] for r in at_h if r["variant"] == variant})
             if len(speeds) < a.min_trend_speeds:
                 continue
-            pick = lambda v, key: [r[key] for s in speeds for r in rows if r["variant"] == v and r["speed_m_per_min"] == s]
-            measured_fc = [r["Fc_N_per_mm"] / (1 + r["Fc_error_percent"] / 100) for s in speeds for r in rows
+            pick = lambda v, key: [r[key] for s in speeds for r in at_h if r["variant"] == v and r["speed_m_per_min"] == s]
+            measured_fc = [r["Fc_N_per_mm"] / (1 + r["Fc_error_percent"] / 100) for s in speeds for r in at_h
                            if r["variant"] == "matrix" and r["speed_m_per_min"] == s]
-            f.write(f"| {variant} | {', '.join(f'{s:g}' for s in speeds)} | "
+            f.write(f"| {variant} | {h:g} | {', '.join(f'{s:g}' for s in speeds)} | "
                     f"{slope(speeds, pick(variant, 'Fc_N_per_mm')):+.1f} | "
                     f"{slope(speeds, pick('matrix', 'Fc_N_per_mm')):+.1f} | {slope(speeds, measured_fc):+.1f} |\n")
     print(a.prefix.with_suffix(".md").read_text())
