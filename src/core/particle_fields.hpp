@@ -62,6 +62,10 @@ inline constexpr unsigned kVtuOptional = 1u << 3;  // snapshots from before the 
     "fracture energy G_f, fixed at damage initiation (rate-dependent; 0 before)")                                     \
   X(double, damage_dissipation, "J_per_m", 0.0, kCheckpoint | kVtu | kVtuRead | kVtuOptional,                         \
     "damage dissipation since the start, per m of thickness; divided by G_f the crack length it stands for")          \
+  X(double, crack_opening, "", 0.0, kCheckpoint | kVtu | kVtuRead | kVtuOptional,                                    \
+    "volumetric (log) strain of the open crack in the particle: the gap that compression closes at zero pressure")   \
+  X(double, crack_opening_max, "", 0.0, kCheckpoint,                                                                  \
+    "largest crack_opening so far: a closed gap reopens at zero stress up to it")                                     \
   /* Contact */                                                                                                       \
   X(Vec2, contact_friction_force, "N_per_m", Vec2::Zero(), kCheckpoint,                                               \
     "penalty contact: the friction force on the particle in its last step in contact (zero out of contact)")         \

@@ -118,14 +118,33 @@ ConstitutiveIncrement JohnsonCookMaterial::update(Particles& p, std::size_t i, c
     }
   }
 
-  // 4. Pressure from the EOS at the end-of-step density and temperature (+ bulk viscosity).
-  double pressure = eos_.pressure(old_pressure, ev, density, T);
+  // 4. Crack gap (theory_materials.md §5.3b). A particle whose crack has opened (step 5) is solid plus gap,
+  //    V = V_solid exp(gap). Compression beyond zero pressure first closes the gap, at zero pressure, and only
+  //    then compresses the solid; tension reopens a gap that has closed, at zero stress, up to the largest
+  //    opening so far. Without it an opened particle (V >> V0) bears compression on its stretched volume
+  //    after cap/K (~0.7 %) of closing: crack faces that push before they touch.
+  const double gap0 = p.crack_opening[i];
+  double gap = gap0;
+  double gap_max = p.crack_opening_max[i];
+  double ev_solid = ev;  // the solid's volumetric strain increment
+  if (gap_max > 0.0) {
+    const double rho_solid = density * std::exp(gap0);
+    const double trial = eos_.pressure(old_pressure, ev, rho_solid, T);  // the solid takes all of ev
+    const double K = eos_.bulk_modulus(rho_solid);
+    if (trial > 0.0) gap = std::max(gap0 - trial / K, 0.0);
+    else if (trial < 0.0) gap = std::min(gap0 - trial / K, gap_max);
+    ev_solid = ev - (gap - gap0);
+  }
+  double solid_density = density * std::exp(gap);
+
+  // 4b. Pressure from the EOS at the end-of-step density of the solid and temperature (+ bulk viscosity).
+  double pressure = eos_.pressure(old_pressure, ev_solid, solid_density, T);
   double viscous_pressure = 0.0;
-  if (eos_.has_bulk_viscosity() && ev < 0.0) {
-    const double c = std::sqrt((eos_.bulk_modulus(density) + 4.0 / 3.0 * G_) / density);
+  if (eos_.has_bulk_viscosity() && ev_solid < 0.0) {
+    const double c = std::sqrt((eos_.bulk_modulus(solid_density) + 4.0 / 3.0 * G_) / solid_density);
     const double f = ctx.inertia_factor;  // mass scaling: damp the dynamics that are integrated
-    viscous_pressure = eos_.bulk_viscosity(f * density, ev / dt, ctx.cell_size, c / std::sqrt(f));
-    inc.viscous_dissipation = viscous_pressure * (-ev) * volume;
+    viscous_pressure = eos_.bulk_viscosity(f * solid_density, ev_solid / dt, ctx.cell_size, c / std::sqrt(f));
+    inc.viscous_dissipation = viscous_pressure * (-ev_solid) * volume;
   }
 
   // 5. Tensile cut-off after initiation (mode I opening, theory_materials.md §5.5): once damage has
@@ -138,17 +157,22 @@ ConstitutiveIncrement JohnsonCookMaterial::update(Particles& p, std::size_t i, c
   if (damage_.enabled() && !failed0 && p.damage_initiation[i] >= 1.0) {
     const double cap = p.initiation_yield_stress[i];
     if (-pressure > cap) {
-      const double K = eos_.bulk_modulus(density);
+      const double K = eos_.bulk_modulus(solid_density);
+      // The solid's tension beyond the cap (the pressure is the solid's: past openings are in the gap, so a
+      // total law p(rho) does not count them again).
       opening = (-pressure - cap) / K;
-      // Total law p(rho) (Mie-Grueneisen): only this step's stretch is new opening.
-      if (eos_.kind() != EquationOfState::Linear) opening = std::min(opening, std::max(ev, 0.0));
       // Work of the final (capped) stress through the opening, as sigma_y d(eps_p) for plastic flow,
       // plus, on the first capped step, the stored tension above the cap that initiation released.
       const double excess_old = std::max(-old_pressure - cap, 0.0);
       opening_dissipation = cap * opening + excess_old * excess_old / (2.0 * K);
       pressure = -cap;
+      gap += opening;  // the opening is the crack's gap from now on
+      gap_max = std::max(gap_max, gap);
+      solid_density = density * std::exp(gap);
     }
   }
+  p.crack_opening[i] = gap;
+  p.crack_opening_max[i] = gap_max;
 
   // 6. Damage: initiation and evolution on the undamaged state, then degradation.
   double D = D0;
@@ -198,7 +222,7 @@ ConstitutiveIncrement JohnsonCookMaterial::update(Particles& p, std::size_t i, c
   inc.damage_dissipation += (1.0 - D0) * opening_dissipation * volume;  // crack opening: not heat
   if (D > D0) {
     double Y = s.contract(s) / (4.0 * G_);
-    if (pressure < 0.0) Y += pressure * pressure / (2.0 * eos_.bulk_modulus(density));
+    if (pressure < 0.0) Y += pressure * pressure / (2.0 * eos_.bulk_modulus(solid_density));
     // At failure the rest of the stored deviatoric and tensile energy goes too: D jumps to 1.
     inc.damage_dissipation += Y * ((failed ? 1.0 : D) - D0) * volume;
   }
@@ -217,7 +241,9 @@ ConstitutiveIncrement JohnsonCookMaterial::update(Particles& p, std::size_t i, c
 }
 
 double JohnsonCookMaterial::wave_speed(const Particles& p, std::size_t i) const {
-  const double density = p.mass[i] / p.volume[i];
+  // Waves travel in the solid: an open crack's gap (step 4 of update) neither carries them nor makes the
+  // particle lighter for them.
+  const double density = p.mass[i] / p.volume[i] * std::exp(p.crack_opening[i]);
   const double K = eos_.bulk_modulus(density);
   if (damage_.failed(damage_.enabled() ? p.damage[i] : 0.0) || flow_.melted(p.temperature[i])) {
     // No shear stiffness. A failed particle that has opened up (V > V0) carries no stress at all; it
@@ -242,7 +268,7 @@ double JohnsonCookMaterial::elastic_energy(const Particles& p, std::size_t i) co
   const double D = damage_.enabled() ? p.damage[i] : 0.0;
   const bool failed = damage_.failed(D);
   const double keep = failed ? 0.0 : 1.0 - D;
-  const double K = eos_.bulk_modulus(p.mass[i] / p.volume[i]);
+  const double K = eos_.bulk_modulus(p.mass[i] / p.volume[i] * std::exp(p.crack_opening[i]));
   const double vol = pressure * pressure / (2.0 * K) * (pressure >= 0.0 ? 1.0 : keep);
   return p.volume[i] * (keep * s.contract(s) / (4.0 * G_) + vol);
 }

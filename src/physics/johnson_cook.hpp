@@ -16,7 +16,8 @@ class JohnsonCookMaterial final : public Material {
 
   ConstitutiveIncrement update(Particles& p, std::size_t i, const Mat2& L,
                                const StepContext& ctx) const override;
-  // sqrt((K(rho) + 4G/3)/rho) at the particle's current density (K the EOS tangent); failed or molten:
+  // sqrt((K(rho) + 4G/3)/rho) at the current density of the particle's solid, m exp(crack_opening)/V (K the
+  // EOS tangent; damaged: (1 - D) on G, and on K in tension); failed or molten:
   // sqrt(K/max(rho, rho0)) (no shear stiffness; an opened crack does not shrink the time step).
   double wave_speed(const Particles& p, std::size_t i) const override;
   // (1-D) s:s/(4G) + p^2/(2K) (tensile p^2 also scaled by 1-D; failed: compression only), times V.

@@ -25,6 +25,19 @@ MaterialParameters with_damage(MaterialParameters m, DamageEvolution law = Damag
                                double G_f = 2.0e4) {
   return mpmcut::testing::with_jc_damage(m, law, G_f);
 }
+// Perfectly plastic at A = 862 MPa, rate- and temperature-independent (no heating), linear Hillerborg damage with
+// G_f, and the given EOS (Mie-Grueneisen constants of Steinberg 1996 [M]): sigma_y0 at initiation is exactly A.
+MaterialParameters perfectly_plastic_with_damage(EquationOfState eos, double G_f) {
+  MaterialParameters m = with_damage(ti64(), DamageEvolution::Linear, G_f);
+  m.jc_B = 0.0;
+  m.jc_C = 0.0;
+  m.taylor_quinney = 0.0;
+  m.eos = eos;
+  m.mg_c0 = 5130.0;
+  m.mg_s = 1.028;
+  m.mg_gamma0 = 1.23;
+  return m;
+}
 Mat2 simple_shear(double gamma_dot) {
   Mat2 L;
   L << 0.0, gamma_dot, 0.0, 0.0;
@@ -419,14 +432,7 @@ TEST(JohnsonCookMaterialPoint, ExponentialSofteningDissipatesFractureEnergy) {
 // stored above sigma_y0 at initiation counted as released. Both EOS forms.
 TEST(JohnsonCookMaterialPoint, TensileCutOffAfterInitiationOpensAndFails) {
   for (EquationOfState eos : {EquationOfState::Linear, EquationOfState::MieGruneisen}) {
-    MaterialParameters m = with_damage(ti64(), DamageEvolution::Linear, 2.0e4);
-    m.jc_B = 0.0;
-    m.jc_C = 0.0;
-    m.taylor_quinney = 0.0;
-    m.eos = eos;
-    m.mg_c0 = 5130.0;  // Steinberg 1996 [M]
-    m.mg_s = 1.028;
-    m.mg_gamma0 = 1.23;
+    const MaterialParameters m = perfectly_plastic_with_damage(eos, 2.0e4);
     const JohnsonCookMaterial jc(m);
     const double L = 5e-6, uf = 2 * 2.0e4 / 862e6;
     MaterialPointDriver d(jc, 298.0, L);
@@ -453,6 +459,79 @@ TEST(JohnsonCookMaterialPoint, TensileCutOffAfterInitiationOpensAndFails) {
     EXPECT_NEAR(balance, work, (eos == EquationOfState::Linear ? 0.005 : 0.02) * work) << what;
     // After initiation about G_f per area V0/L, plus the stored tension released at initiation.
     EXPECT_GT(c.damage_dissipation / (1.0 / L), 2.0e4) << what;
+  }
+}
+
+// theory §5.3b: the crack gap. A particle opened by the tensile cut-off (uniaxial-strain tension after
+// initiation) is solid plus gap. Compressed again, its undamaged pressure rises from -sigma_y0 to zero as the
+// solid unloads (sigma_y0/K of strain), stays at zero while the gap closes (crack_opening of strain), and only
+// then grows with K; pulled back, the gap reopens at zero stress up to the largest opening before the solid
+// takes tension. The energy balance closes over the whole cycle (closing and reopening do no work), and
+// the time step does not see the gap: the wave speed stays that of the solid. Both EOS forms (Mie-Grueneisen
+// closes with its tangent modulus, so its zero is approximate).
+TEST(JohnsonCookMaterialPoint, OpenedCrackClosesAtZeroPressureThenBearsCompression) {
+  for (EquationOfState eos : {EquationOfState::Linear, EquationOfState::MieGruneisen}) {
+    const char* what = eos == EquationOfState::Linear ? "linear EOS" : "Mie-Grueneisen";
+    const MaterialParameters m = perfectly_plastic_with_damage(eos, 2.0e6);  // far from failing
+    const JohnsonCookMaterial jc(m);
+    const double K = eos == EquationOfState::Linear ? m.bulk_modulus() : m.density * m.mg_c0 * m.mg_c0;
+    const double cap = 862e6, L = 5e-6, rate = 1e3, dt = 1e-7, de = rate * dt;  // 1e-4 strain per step
+    const double tol = (eos == EquationOfState::Linear ? 1e-6 : 2e-2) * cap;
+    MaterialPointDriver d(jc, 298.0, L);
+    double work = 0.0;  // int sigma : D dt V, trapezoidal (only sigma_xx works: L = diag(a, 0))
+    auto drive = [&](double a) {
+      const MaterialPointRecord before = d.last();
+      const MaterialPointRecord r = d.step(diagonal(a, 0.0), dt);
+      work += 0.5 * (before.stress.xx * before.volume + r.stress.xx * r.volume) * a * dt;
+      return r;
+    };
+    auto pressure = [](const MaterialPointRecord& r) { return -r.effective_stress.mean(); };
+    // Open: pull until the gap is 0.3 (V about 1.35 V0).
+    int k = 0;
+    while (d.last().crack_opening < 0.3 && k++ < 10000) drive(rate);
+    const double gap = d.last().crack_opening;
+    ASSERT_GE(gap, 0.3) << what;
+    ASSERT_LT(d.last().damage, m.max_damage) << what;
+    EXPECT_NEAR(pressure(d.last()), -cap, tol) << what;
+    EXPECT_EQ(d.last().crack_opening_max, gap) << what;
+    const double c_solid = std::sqrt((K + 4.0 / 3.0 * jc.shear_modulus()) / m.density);
+    EXPECT_LT(jc.wave_speed(d.particles(), 0), 1.01 * c_solid) << what << ": the gap shortens the time step";
+
+    // Close: compress by cap/K + gap + 0.002.
+    const double unload = cap / K, solid = 0.002;
+    const int n_close = static_cast<int>(std::ceil((unload + gap + solid) / de));
+    double x = 0.0;
+    for (int s = 0; s < n_close; ++s) {
+      const MaterialPointRecord r = drive(-rate);
+      x += de;
+      const double expected = x < unload ? -cap + K * x : x < unload + gap ? 0.0 : K * (x - unload - gap);
+      if (eos == EquationOfState::Linear || x > unload + 2 * de)  // MG: its tangent K differs near -cap
+        ASSERT_NEAR(pressure(r), expected, tol + (eos == EquationOfState::Linear ? 0.0 : 0.02 * expected))
+            << what << ", closing, strain " << x;
+    }
+    EXPECT_EQ(d.last().crack_opening, 0.0) << what;
+    EXPECT_GT(pressure(d.last()), 0.5 * K * solid) << what << ": a closed crack bears compression";
+
+    // Reopen: pull by 0.002 + gap + cap/K + 0.001: the solid unloads, the gap reopens at zero stress, then the
+    // solid takes tension up to the cap and opens further.
+    const double n_reopen = static_cast<int>(std::ceil((solid + gap + unload + 0.001) / de));
+    const double p_start = pressure(d.last()), x_start = x - unload - gap;  // solid compression at the start
+    double y = 0.0;
+    for (int s = 0; s < n_reopen; ++s) {
+      const MaterialPointRecord r = drive(rate);
+      y += de;
+      const double expected = y < x_start ? p_start - K * y : y < x_start + gap ? 0.0
+                                                                 : std::max(-K * (y - x_start - gap), -cap);
+      if (eos == EquationOfState::Linear)
+        ASSERT_NEAR(pressure(r), expected, tol + 1e-9 * std::abs(p_start)) << what << ", reopening, strain " << y;
+      else if (y > x_start + 2 * de && y < x_start + gap - 2 * de)
+        ASSERT_NEAR(pressure(r), 0.0, tol) << what << ", reopening, strain " << y;
+    }
+    EXPECT_NEAR(d.last().crack_opening, d.last().crack_opening_max, 1e-12) << what;
+    EXPECT_GT(d.last().crack_opening_max, gap) << what << ": the pull beyond the old gap opens it further";
+    const ConstitutiveIncrement& c = d.last().cumulative;
+    const double balance = d.last().elastic_energy + c.plastic_work + c.damage_dissipation;
+    EXPECT_NEAR(balance, work, (eos == EquationOfState::Linear ? 0.005 : 0.02) * std::abs(work)) << what;
   }
 }
 
