@@ -10,6 +10,13 @@ namespace mpmcut {
 namespace {
 constexpr double kReturnTolerance = 1e-12;  // |r| <= tol * q_trial
 constexpr int kMaxReturnIterations = 200;   // bisection alone needs ~60 to reach double precision
+
+// Density of the solid of a particle that is solid plus crack gap, V = V_solid exp(gap) (update step 4). Most
+// particles have no gap: no exp on the hot path for them.
+double solid_density(double density, double gap) { return gap > 0.0 ? density * std::exp(gap) : density; }
+double solid_density(const Particles& p, std::size_t i) {
+  return solid_density(p.mass[i] / p.volume[i], p.crack_opening[i]);
+}
 }  // namespace
 
 JohnsonCookMaterial::JohnsonCookMaterial(const MaterialParameters& params)
@@ -128,22 +135,22 @@ ConstitutiveIncrement JohnsonCookMaterial::update(Particles& p, std::size_t i, c
   double gap_max = p.crack_opening_max[i];
   double ev_solid = ev;  // the solid's volumetric strain increment
   if (gap_max > 0.0) {
-    const double rho_solid = density * std::exp(gap0);
-    const double trial = eos_.pressure(old_pressure, ev, rho_solid, T);  // the solid takes all of ev
-    const double K = eos_.bulk_modulus(rho_solid);
+    const double rho_before = solid_density(density, gap0);
+    const double trial = eos_.pressure(old_pressure, ev, rho_before, T);  // the solid takes all of ev
+    const double K = eos_.bulk_modulus(rho_before);
     if (trial > 0.0) gap = std::max(gap0 - trial / K, 0.0);
     else if (trial < 0.0) gap = std::min(gap0 - trial / K, gap_max);
     ev_solid = ev - (gap - gap0);
   }
-  double solid_density = density * std::exp(gap);
+  double rho_solid = solid_density(density, gap);
 
   // 4b. Pressure from the EOS at the end-of-step density of the solid and temperature (+ bulk viscosity).
-  double pressure = eos_.pressure(old_pressure, ev_solid, solid_density, T);
+  double pressure = eos_.pressure(old_pressure, ev_solid, rho_solid, T);
   double viscous_pressure = 0.0;
   if (eos_.has_bulk_viscosity() && ev_solid < 0.0) {
-    const double c = std::sqrt((eos_.bulk_modulus(solid_density) + 4.0 / 3.0 * G_) / solid_density);
+    const double c = std::sqrt((eos_.bulk_modulus(rho_solid) + 4.0 / 3.0 * G_) / rho_solid);
     const double f = ctx.inertia_factor;  // mass scaling: damp the dynamics that are integrated
-    viscous_pressure = eos_.bulk_viscosity(f * solid_density, ev_solid / dt, ctx.cell_size, c / std::sqrt(f));
+    viscous_pressure = eos_.bulk_viscosity(f * rho_solid, ev_solid / dt, ctx.cell_size, c / std::sqrt(f));
     inc.viscous_dissipation = viscous_pressure * (-ev_solid) * volume;
   }
 
@@ -157,7 +164,7 @@ ConstitutiveIncrement JohnsonCookMaterial::update(Particles& p, std::size_t i, c
   if (damage_.enabled() && !failed0 && p.damage_initiation[i] >= 1.0) {
     const double cap = p.initiation_yield_stress[i];
     if (-pressure > cap) {
-      const double K = eos_.bulk_modulus(solid_density);
+      const double K = eos_.bulk_modulus(rho_solid);
       // The solid's tension beyond the cap (the pressure is the solid's: past openings are in the gap, so a
       // total law p(rho) does not count them again).
       opening = (-pressure - cap) / K;
@@ -168,7 +175,7 @@ ConstitutiveIncrement JohnsonCookMaterial::update(Particles& p, std::size_t i, c
       pressure = -cap;
       gap += opening;  // the opening is the crack's gap from now on
       gap_max = std::max(gap_max, gap);
-      solid_density = density * std::exp(gap);
+      rho_solid = solid_density(density, gap);
     }
   }
   p.crack_opening[i] = gap;
@@ -222,7 +229,7 @@ ConstitutiveIncrement JohnsonCookMaterial::update(Particles& p, std::size_t i, c
   inc.damage_dissipation += (1.0 - D0) * opening_dissipation * volume;  // crack opening: not heat
   if (D > D0) {
     double Y = s.contract(s) / (4.0 * G_);
-    if (pressure < 0.0) Y += pressure * pressure / (2.0 * eos_.bulk_modulus(solid_density));
+    if (pressure < 0.0) Y += pressure * pressure / (2.0 * eos_.bulk_modulus(rho_solid));
     // At failure the rest of the stored deviatoric and tensile energy goes too: D jumps to 1.
     inc.damage_dissipation += Y * ((failed ? 1.0 : D) - D0) * volume;
   }
@@ -243,7 +250,7 @@ ConstitutiveIncrement JohnsonCookMaterial::update(Particles& p, std::size_t i, c
 double JohnsonCookMaterial::wave_speed(const Particles& p, std::size_t i) const {
   // Waves travel in the solid: an open crack's gap (step 4 of update) neither carries them nor makes the
   // particle lighter for them.
-  const double density = p.mass[i] / p.volume[i] * std::exp(p.crack_opening[i]);
+  const double density = solid_density(p, i);
   const double K = eos_.bulk_modulus(density);
   if (damage_.failed(damage_.enabled() ? p.damage[i] : 0.0) || flow_.melted(p.temperature[i])) {
     // No shear stiffness. A failed particle that has opened up (V > V0) carries no stress at all; it
@@ -268,7 +275,7 @@ double JohnsonCookMaterial::elastic_energy(const Particles& p, std::size_t i) co
   const double D = damage_.enabled() ? p.damage[i] : 0.0;
   const bool failed = damage_.failed(D);
   const double keep = failed ? 0.0 : 1.0 - D;
-  const double K = eos_.bulk_modulus(p.mass[i] / p.volume[i] * std::exp(p.crack_opening[i]));
+  const double K = eos_.bulk_modulus(solid_density(p, i));
   const double vol = pressure * pressure / (2.0 * K) * (pressure >= 0.0 ? 1.0 : keep);
   return p.volume[i] * (keep * s.contract(s) / (4.0 * G_) + vol);
 }
