@@ -191,7 +191,30 @@ ChipAnalysis analyze_chip(const Particles& p, const ChipAnalysisSetup& s) {
     a.profile.start_m = s0;
   }
   a.min_pitch_m = std::max(th.min_pitch_t0 * t0, th.min_pitch_cells * h);
-  a.segmentation = measure_segmentation(a.profile, a.prominence_m, a.min_pitch_m);
+  a.narrow_width_m = th.narrow_excursion_cells * h;
+  // A one-piece chip's free end is the chip cut while the tool entered: it tapers from the workpiece's
+  // edge and its shape is not the cut's (a smooth chip's tapered end was counted as a deep tooth). By
+  // volume constancy the chip of e t0 of travel holds the area e t0^2; that tail is left out. A broken
+  // chip's profile ends at a fracture, not at the entry, and is measured whole.
+  a.steady_samples = a.profile.thickness_m.size();
+  if (a.pieces <= 1 && a.steady_samples > 0) {
+    const std::size_t kept = samples_before_tail_area(a.profile, th.entry_travel_t0 * t0 * t0);
+    if (kept >= 3) {
+      a.steady_samples = kept;
+    } else {
+      a.profile_note = fmt::format(
+          "the chip holds little more than the chip of the tool's entry ({:g} t0 of travel): its profile is "
+          "measured whole, so the segmentation describes the entry chip",
+          th.entry_travel_t0);
+    }
+  }
+  {
+    ChipProfile steady = a.profile;
+    steady.thickness_m.resize(a.steady_samples);
+    steady.inner_m.resize(a.steady_samples);
+    steady.tangent.resize(a.steady_samples);
+    a.segmentation = measure_segmentation(steady, a.prominence_m, a.min_pitch_m, a.narrow_width_m);
+  }
   if (a.segmentation.mean_thickness_m) {
     const double r = t0 / *a.segmentation.mean_thickness_m;
     a.chip_thickness_ratio = r;
@@ -360,12 +383,17 @@ nlohmann::json chip_json(const ChipAnalysis& a) {
   j["profile"] = {{"start_m", a.profile.start_m},
                   {"spacing_m", a.profile.spacing_m},
                   {"samples", a.profile.thickness_m.size()},
+                  {"steady_samples", a.steady_samples},
+                  {"steady_end_m", a.steady_samples > 0 ? nlohmann::json(a.profile.position_m(a.steady_samples - 1))
+                                                        : nlohmann::json(nullptr)},
+                  {"note", a.profile_note.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.profile_note)},
                   {"peak_positions_m", nlohmann::json::array()},
                   {"valley_positions_m", nlohmann::json::array()}};
   for (std::size_t k : g.extrema.peaks) j["profile"]["peak_positions_m"].push_back(a.profile.position_m(k));
   for (std::size_t k : g.extrema.valleys) j["profile"]["valley_positions_m"].push_back(a.profile.position_m(k));
   j["thresholds"] = {{"prominence_m", a.prominence_m},
                      {"min_pitch_m", a.min_pitch_m},
+                     {"narrow_width_m", a.narrow_width_m},
                      {"significant_piece_particles", a.significant_piece_particles},
                      {"band_plastic_strain", optional_json(a.band_strain_threshold)}};
   j["definition"] = "docs/analysis.md";
@@ -403,6 +431,11 @@ std::string chip_summary_text(const ChipAnalysis& a) {
   s += fmt::format("  temperature: max {} K, primary shear zone {} K, tool-chip interface {} K\n",
                    num(a.max_temperature_K, "{:.0f}"), num(a.primary_shear_zone.max_K, "{:.0f}"),
                    num(a.tool_chip_interface.max_K, "{:.0f}"));
+  if (a.steady_samples > 0 && a.steady_samples < a.profile.thickness_m.size())
+    s += fmt::format("  profile: {:.0f} to {:.0f} um along the chip measured; the entry chip beyond, to {:.0f} um, left out\n",
+                     a.profile.start_m * 1e6, a.profile.position_m(a.steady_samples - 1) * 1e6,
+                     a.profile.position_m(a.profile.thickness_m.size() - 1) * 1e6);
+  if (!a.profile_note.empty()) s += "  note: " + a.profile_note + "\n";
   if (!a.resolution_note.empty()) s += "  note: " + a.resolution_note + "\n";
   return s;
 }

@@ -34,6 +34,10 @@ struct ChipThresholds {
   double prominence_spacings = 1.5;        // ... and at least this many d (one particle is not a tooth)
   double min_pitch_t0 = 0.25;              // teeth closer than this many t0 along the chip are one tooth ...
   double min_pitch_cells = 2.0;            // ... and closer than this many h (the grid cannot resolve them)
+  double narrow_excursion_cells = 1.0;     // thickness excursions this many h wide or narrower are not teeth
+  // A one-piece chip's free end was cut while the tool entered: the tail of the profile holding the
+  // chip of this many t0 of travel (area entry_travel_t0 t0^2) is left out of the segmentation metrics.
+  double entry_travel_t0 = kEntryTravelT0;
   double serrated_degree = 0.1;            // Gs at or above: serrated (one piece) ...
   std::size_t serrated_min_segments = 2;   // ... with at least this many teeth (a repeating pattern)
   // Reporting margin: a one-piece chip whose Gs lies within this of serrated_degree, or that is as deep
@@ -104,6 +108,11 @@ struct ChipAnalysis {
   Segmentation segmentation;
   double prominence_m = 0.0;
   double min_pitch_m = 0.0;                          // neighbouring teeth closer than this are merged
+  double narrow_width_m = 0.0;                       // excursions this wide or narrower are removed
+  // Leading profile samples the segmentation, thickness ratio and pitch are measured on: all of them,
+  // or those before the entry chip's tail (ChipThresholds::entry_travel_t0).
+  std::size_t steady_samples = 0;
+  std::string profile_note;                          // non-empty when the entry chip could not be left out
   std::optional<double> chip_thickness_ratio;        // r = t0 / t_c, t_c = mean profile thickness
   std::optional<double> shear_angle_from_ratio_deg;  // tan phi = r cos a / (1 - r sin a)
   std::optional<double> chip_velocity_m_per_s;       // V r (continuity)

@@ -210,9 +210,41 @@ void merge_close_extrema(const std::vector<double>& y, ProfileExtrema& extrema, 
   for (const Extremum& e : seq) (e.peak ? extrema.peaks : extrema.valleys).push_back(e.index);
 }
 
-Segmentation measure_segmentation(const ChipProfile& profile, double prominence, double min_pitch) {
+void remove_narrow_excursions(std::vector<double>& y, double prominence, std::size_t max_width) {
+  const std::size_t n = y.size();
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    for (std::size_t w = 1; w <= max_width && i + w < n; ++w) {
+      const double left = y[i - 1], right = y[i + w];
+      bool below = true, above = true;
+      for (std::size_t k = i; k < i + w; ++k) {
+        below = below && y[k] <= std::min(left, right) - prominence;
+        above = above && y[k] >= std::max(left, right) + prominence;
+      }
+      if (!below && !above) continue;
+      for (std::size_t k = i; k < i + w; ++k)
+        y[k] = left + (right - left) * static_cast<double>(k - i + 1) / static_cast<double>(w + 1);
+      i += w - 1;  // the loop's ++i moves on to the right neighbour
+      break;
+    }
+  }
+}
+
+std::size_t samples_before_tail_area(const ChipProfile& profile, double area) {
+  std::size_t k = profile.thickness_m.size();
+  double tail = 0.0;
+  while (k > 0 && tail < area) tail += profile.thickness_m[--k] * profile.spacing_m;
+  return tail < area ? 0 : k;
+}
+
+Segmentation measure_segmentation(const ChipProfile& profile, double prominence, double min_pitch,
+                                  double narrow_width) {
   Segmentation s;
-  const std::vector<double>& t = profile.thickness_m;
+  s.thickness_m = profile.thickness_m;
+  std::vector<double>& t = s.thickness_m;
+  if (narrow_width > 0.0 && profile.spacing_m > 0.0) {
+    const auto width = static_cast<std::size_t>(std::floor(narrow_width / profile.spacing_m + 1e-9));
+    remove_narrow_excursions(t, prominence, std::max<std::size_t>(1, width));
+  }
   double sum = 0.0, max = 0.0;
   std::size_t filled = 0;
   for (double v : t) {

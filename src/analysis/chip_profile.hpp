@@ -62,8 +62,22 @@ ProfileExtrema find_profile_extrema(const std::vector<double>& y, double promine
 // and every remaining extremum still differs from its neighbours by at least the prominence.
 void merge_close_extrema(const std::vector<double>& y, ProfileExtrema& extrema, std::size_t min_spacing);
 
+// A cross-section that crosses a particle-row gap inside the chip (or picks up a loose particle at
+// the free surface) measures a thickness far from its neighbours' for one or two stations. Such an
+// excursion is narrower than a cell, which the grid cannot carry as a tooth. Every run of at most
+// `max_width` samples that lies at least `prominence` below both samples beside it (or at least
+// `prominence` above both) is replaced by the straight line between those two samples; runs that
+// touch the first or last sample stay. A real tooth's valley, wider than a cell, is kept.
+void remove_narrow_excursions(std::vector<double>& y, double prominence, std::size_t max_width);
+
+// The number of leading samples left when the profile's tail holding `area` of chip (the sum of
+// thickness x spacing from the last sample back, m^2 per m of width) is cut off; 0 when the tail
+// takes it all. Used to leave out the chip cut during the tool's entry (docs/analysis.md).
+std::size_t samples_before_tail_area(const ChipProfile& profile, double area);
+
 struct Segmentation {
-  ProfileExtrema extrema;
+  std::vector<double> thickness_m;         // the line measured: the profile without its narrow excursions
+  ProfileExtrema extrema;                  // indices into thickness_m (and the profile)
   std::size_t segments = 0;                // number of peaks; 0 without a peak and valley pair
   std::optional<double> peak_height_m;     // H: mean thickness at the peaks
   std::optional<double> valley_height_m;   // h: mean thickness at the valleys
@@ -74,8 +88,11 @@ struct Segmentation {
   std::optional<double> degree;
   std::optional<double> pitch_m;           // mean distance between consecutive peaks (>= 2 peaks)
 };
-// Extrema by prominence (find_profile_extrema), then teeth closer than min_pitch (m) along the chip
-// merged (merge_close_extrema; 0 keeps them all). Empty profile: every optional empty.
-Segmentation measure_segmentation(const ChipProfile& profile, double prominence, double min_pitch = 0.0);
+// Excursions narrower than narrow_width (m) removed (remove_narrow_excursions; 0 keeps them), then
+// extrema by prominence (find_profile_extrema), then teeth closer than min_pitch (m) along the chip
+// merged (merge_close_extrema; 0 keeps them all); every metric is of the cleaned line. Empty
+// profile: every optional empty.
+Segmentation measure_segmentation(const ChipProfile& profile, double prominence, double min_pitch = 0.0,
+                                  double narrow_width = 0.0);
 
 }  // namespace mpmcut

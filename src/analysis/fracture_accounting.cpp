@@ -89,8 +89,10 @@ void chip_crack_lengths(const ChipAnalysis& a, double t0, std::vector<double>& s
                         std::vector<double>& piece_separations) {
   segment_cracks.clear();
   piece_separations.clear();
-  const std::vector<double>& y = a.profile.thickness_m;
-  const ProfileExtrema& e = a.segmentation.extrema;
+  // The gullets of the whole chip, the entry's included: all of it is new surface.
+  const Segmentation whole = measure_segmentation(a.profile, a.prominence_m, a.min_pitch_m, a.narrow_width_m);
+  const std::vector<double>& y = whole.thickness_m;
+  const ProfileExtrema& e = whole.extrema;
   for (std::size_t v : e.valleys) {
     // The peaks on either side of the valley (the extrema alternate).
     double sum = 0.0;
@@ -100,7 +102,7 @@ void chip_crack_lengths(const ChipAnalysis& a, double t0, std::vector<double>& s
     if (after != e.peaks.begin()) sum += y[*(after - 1)], ++n;
     if (n > 0 && sum / n > y[v]) segment_cracks.push_back(sum / n - y[v]);
   }
-  const Segmentation& g = a.segmentation;
+  const Segmentation& g = whole;
   const double thickness = g.peak_height_m ? *g.peak_height_m : g.mean_thickness_m ? *g.mean_thickness_m : t0;
   for (std::size_t k = 1; k < a.pieces; ++k) piece_separations.push_back(thickness);
 }

@@ -33,9 +33,15 @@ struct CuttingParameters {
   // where that is already reached), else the factor itself (1 = off).
   double mass_scaling = 0.0;                  // f, -
   double mass_scaling_inertia_number = 2e-3;  // target of the automatic factor, -
-  double steady_start_fraction = 0.4;// steady window starts after this fraction of the cut (and after min(3 t0, 0.6 cut))
+  double steady_start_fraction = 0.4;// steady window starts after this fraction of the cut (and after min(kEntryTravelT0 t0, 0.6 cut))
 
   bool operator==(const CuttingParameters&) const = default;
 };
+
+// The entry transient, in uncut chip thicknesses of tool travel: while the tool enters the workpiece
+// the first chip forms from its edge. The force's steady window starts after it at the earliest
+// (steady_window_start_travel) and the chip cut during it is left out of the segmentation metrics
+// (ChipThresholds::entry_travel_t0, docs/analysis.md).
+inline constexpr double kEntryTravelT0 = 3.0;
 
 }  // namespace mpmcut

@@ -14,7 +14,7 @@ namespace mpmcut {
 // The chip needs about three uncut chip thicknesses of travel to form; short cuts still get
 // the last 40% of their travel as the window.
 double steady_window_start_travel(const CuttingParameters& c) {
-  return std::max(c.steady_start_fraction * c.cut_length, std::min(3.0 * c.uncut_chip_thickness, 0.6 * c.cut_length));
+  return std::max(c.steady_start_fraction * c.cut_length, std::min(kEntryTravelT0 * c.uncut_chip_thickness, 0.6 * c.cut_length));
 }
 
 double cutting_cell_size(const CuttingParameters& c) {

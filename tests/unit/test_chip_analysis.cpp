@@ -114,11 +114,53 @@ TEST(ChipAnalysis, SawtoothChipIsSerrated) {
   EXPECT_EQ(a.classification, "serrated");
   EXPECT_EQ(a.classification_confidence, "clear");
   EXPECT_EQ(a.pieces, 1u);
-  EXPECT_GE(a.segmentation.segments, 7u);
+  // Ten teeth on the chip; the tail holding 3 t0^2 is taken as the entry chip and left out.
+  EXPECT_GE(a.segmentation.segments, 6u);
   EXPECT_NEAR(*a.segmentation.degree, (H - h) / H, 0.06);
   EXPECT_NEAR(*a.segmentation.pitch_m, pitch, kD);
   const double vc = 20.0 * *a.chip_thickness_ratio;
   EXPECT_NEAR(*a.segmentation_frequency_Hz, vc / *a.segmentation.pitch_m, 1e-6);
+}
+
+// The chip's free end was cut while the tool entered the workpiece: in the simulated cuts it is thicker
+// than the steady chip, then tapers to the workpiece's corner (docs/results/shear_localisation, 12.6 and
+// 381.3 m/min at t0/24). Measured whole, a smooth chip with such an end shows one deep tooth (Gs 0.55)
+// and a mean thickness above the steady one. The tail holding 3 t0^2 (the chip of 3 t0 of travel) is
+// left out: the chip is flat, its thickness ratio the steady one.
+TEST(ChipAnalysis, TheEntryChipAtTheFreeEndIsLeftOut) {
+  const ChipAnalysisSetup s = synthetic_setup();
+  const auto with_entry_end = [](double y) {
+    const double u = y * 1e6;
+    const double t = u < 820 ? 150 : u < 900 ? 150 + 50 * (u - 820) / 80 : u < 960 ? 200 - 140 * (u - 900) / 60 : 130;
+    return t * 1e-6;
+  };
+  const ChipAnalysis a = analyze_chip(chip_particles_of(1e-3, with_entry_end), s);
+  ASSERT_EQ(a.pieces, 1u);
+  EXPECT_EQ(a.classification, "continuous");
+  EXPECT_EQ(a.classification_confidence, "clear") << a.classification_note;
+  EXPECT_EQ(*a.segmentation.degree, 0.0);
+  EXPECT_NEAR(*a.segmentation.mean_thickness_m, 150e-6, 1e-12);
+  // The measured part ends where the tail holds 3 t0^2 (27 000 um^2 from 820 um on): in the flat part,
+  // about 20 um before the entry chip's thickening.
+  const double end = a.profile.position_m(a.steady_samples - 1);
+  EXPECT_GT(end, 790e-6);
+  EXPECT_LT(end, 815e-6);
+  EXPECT_TRUE(a.profile_note.empty());
+  const nlohmann::json j = chip_json(a);
+  EXPECT_EQ(j["profile"]["steady_samples"], a.steady_samples);
+  EXPECT_LT(a.steady_samples, a.profile.thickness_m.size());
+  // The whole profile still holds the entry's tooth: the thresholds alone would not remove it.
+  const Segmentation whole = measure_segmentation(a.profile, a.prominence_m, a.min_pitch_m, a.narrow_width_m);
+  EXPECT_GT(*whole.degree, 0.4);
+}
+
+// A chip shorter than the entry's (early in a cut) is measured whole, and says so.
+TEST(ChipAnalysis, AChipOfOnlyTheEntryIsMeasuredWholeWithANote) {
+  const ChipAnalysisSetup s = synthetic_setup();
+  const ChipAnalysis a = analyze_chip(chip_particles_of(300e-6, [](double) { return 150e-6; }), s);
+  EXPECT_EQ(a.steady_samples, a.profile.thickness_m.size());
+  EXPECT_NE(a.profile_note.find("entry"), std::string::npos) << a.profile_note;
+  EXPECT_EQ(chip_json(a)["profile"]["note"], a.profile_note);
 }
 
 TEST(ChipAnalysis, BlocksSeparatedByFailedRowsAreDiscontinuous) {

@@ -132,6 +132,59 @@ TEST(ChipProfile, MergingKeepsAlternationAndProminence) {
   }
 }
 
+// The 12.6 m/min cut at t0/24 (docs/results/shear_localisation) measured a smooth chip ~200 um thick
+// whose cross-section crossed a particle-row gap at two stations (21.7 and 30.9 um): each one-sample
+// dip became a valley between two "peaks", and Gs came out 0.47. One cell (two samples at h/2) or
+// narrower is not a tooth; the real valley of a saw-tooth, wider than that, stays.
+TEST(ChipProfile, DipsNarrowerThanACellAreNotTeeth) {
+  const double spacing = 2e-6, prominence = 10e-6;
+  std::vector<double> smooth(60, 200e-6);
+  for (int k = 0; k < 60; ++k) smooth[k] += 4e-6 * std::sin(0.3 * k);  // free-surface roughness below p
+  std::vector<double> dipped = smooth;
+  dipped[15] = 21.7e-6;                       // one sample
+  dipped[40] = 30.9e-6, dipped[41] = 0.0;     // two samples (a gap)
+  const Segmentation raw = measure_segmentation(profile_of(dipped, spacing), prominence);
+  ASSERT_GE(raw.segments, 2u);                // without the cleaning: counted as teeth
+  ASSERT_GT(*raw.degree, 0.5);
+  const Segmentation clean = measure_segmentation(profile_of(dipped, spacing), prominence, 0.0, 2 * spacing);
+  EXPECT_EQ(clean.segments, 0u);
+  EXPECT_EQ(*clean.degree, 0.0);
+  for (std::size_t k = 0; k < smooth.size(); ++k) EXPECT_NEAR(clean.thickness_m[k], smooth[k], 8e-6) << k;
+  EXPECT_NEAR(*clean.mean_thickness_m, 200e-6, 1e-6);
+  // Three samples are wider than the cell: a valley.
+  std::vector<double> wide = smooth;
+  wide[30] = wide[31] = wide[32] = 150e-6;
+  const Segmentation kept = measure_segmentation(profile_of(wide, spacing), prominence, 0.0, 2 * spacing);
+  ASSERT_EQ(kept.extrema.valleys.size(), 1u);
+  EXPECT_NEAR(kept.thickness_m[kept.extrema.valleys[0]], 150e-6, 1e-12);
+  // A saw-tooth's valley (one low sample, its right neighbour only just higher) is not an excursion.
+  const ChipProfile saw = profile_of(sawtooth(60e-6, 100e-6, 10, 5), 5e-6);
+  const Segmentation sawn = measure_segmentation(saw, 10e-6, 0.0, 10e-6);
+  EXPECT_EQ(sawn.extrema.valleys, (std::vector<std::size_t>{10, 20, 30, 40}));
+  EXPECT_DOUBLE_EQ(*sawn.degree, 0.4);
+}
+
+TEST(ChipProfile, NarrowExcursionsUpAndAtTheEnds) {
+  std::vector<double> y{5, 50, 5, 5, 6, 60, 61, 7, 7, 80};  // spikes of one and two samples; a jump at the end
+  remove_narrow_excursions(y, 10, 2);
+  const std::vector<double> want{5, 5, 5, 5, 6, 6 + 1.0 / 3.0, 6 + 2.0 / 3.0, 7, 7, 80};
+  ASSERT_EQ(y.size(), want.size());
+  for (std::size_t k = 0; k < y.size(); ++k) EXPECT_NEAR(y[k], want[k], 1e-12) << k;
+  std::vector<double> first{50, 5, 5};  // a first sample is the profile's cut end: kept
+  remove_narrow_excursions(first, 10, 2);
+  EXPECT_EQ(first, (std::vector<double>{50, 5, 5}));
+}
+
+TEST(ChipProfile, TailAreaCountsSamplesFromTheEnd) {
+  const ChipProfile p = profile_of({1, 1, 2, 2, 4}, 0.5);  // areas 0.5 0.5 1 1 2
+  EXPECT_EQ(samples_before_tail_area(p, 2.0), 4u);   // the last sample holds it
+  EXPECT_EQ(samples_before_tail_area(p, 2.5), 3u);
+  EXPECT_EQ(samples_before_tail_area(p, 4.0), 2u);
+  EXPECT_EQ(samples_before_tail_area(p, 5.0), 0u);   // all of it
+  EXPECT_EQ(samples_before_tail_area(p, 6.0), 0u);
+  EXPECT_EQ(samples_before_tail_area(p, 0.0), 5u);
+}
+
 TEST(ChipProfile, EmptyProfileHasNoMetrics) {
   const Segmentation s = measure_segmentation(ChipProfile{}, 1e-6);
   EXPECT_FALSE(s.degree.has_value());

@@ -24,9 +24,9 @@ TEST(FractureAccounting, GulletDepthsAndPieceSeparations) {
   ChipAnalysis a;
   a.profile.spacing_m = 5e-6;
   a.profile.thickness_m = {80e-6, 100e-6, 60e-6, 120e-6, 70e-6, 110e-6, 90e-6};
-  a.segmentation.extrema.peaks = {1, 3, 5};
-  a.segmentation.extrema.valleys = {2, 4};
-  a.segmentation.peak_height_m = 110e-6;
+  // The gullets are sought on the whole profile (the entry chip's included): peaks 1, 3, 5, valleys 2, 4.
+  a.prominence_m = 10e-6;
+  a.steady_samples = 2;  // what the segmentation metrics measured does not limit the new surface
   a.pieces = 3;
   std::vector<double> seg, sep;
   chip_crack_lengths(a, 100e-6, seg, sep);
@@ -39,6 +39,7 @@ TEST(FractureAccounting, GulletDepthsAndPieceSeparations) {
   ChipAnalysis flat;
   flat.profile.thickness_m = {1e-4, 1e-4};
   flat.pieces = 1;
+  flat.prominence_m = 10e-6;
   chip_crack_lengths(flat, 100e-6, seg, sep);
   EXPECT_TRUE(seg.empty());
   EXPECT_TRUE(sep.empty());
