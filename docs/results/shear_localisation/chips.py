@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""chips.png: the plastic strain pictures of the two ends at the three resolutions, side by side.
+"""chips.png: the plastic strain pictures of the two ends at the four resolutions, side by side.
 
 Reads the chip_plastic_strain_*.png that each run drew (run.sh writes results/shear_localisation/<variant>_<condition>;
 the matrix-resolution runs are those of docs/results/crack_gap/run.sh, the same physics and scenes as the penalty
@@ -34,8 +34,9 @@ def main():
     study = "results/shear_localisation/{n}_{c}/{c}"
     columns = [("t0/12–13 (matrix: 7.9 / 8.25 µm)", a.matrix_runs),
                ("t0/16 (6.25 µm)", study.replace("{n}", "t0_16")),
-               ("t0/24 (4.17 µm)", study.replace("{n}", "t0_24"))]
-    fig, ax = plt.subplots(2, 3, figsize=(15, 8.4))
+               ("t0/24 (4.17 µm)", study.replace("{n}", "t0_24")),
+               ("t0/32 (3.13 µm)", study.replace("{n}", "t0_32"))]
+    fig, ax = plt.subplots(2, len(columns), figsize=(5 * len(columns), 8.4))
     for j, (label, pattern) in enumerate(columns):
         for i, v in enumerate(["12.6", "381.3"]):
             c = f"forces_h0.1mm_vc{v}mpmin"
