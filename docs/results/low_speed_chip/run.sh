@@ -1,0 +1,31 @@
+#!/bin/bash
+# Why does the chip at 12.6 m/min keep thickening with refinement (docs/results/shear_localisation: steady chip
+# 143 -> 162 -> 178 -> 202 um from 8 um to t0/32, measured 157)? One change at a time against the t0/16 run of
+# shear_localisation (penalty contact, speed-ends material, crack gap, mass scaling to inertia number 0.002):
+#   node:     the node contact instead of the penalty contact
+#   inertia:  mass scaling to inertia number 0.0005 instead of 0.002 (inertia x ~2200 instead of x 8825)
+# Both at once, one thread each. Resumable: a run with a record is not run again, an interrupted one resumes
+# from its checkpoint. Records in docs/results/low_speed_chip/records/<variant>/<condition>.
+# usage: bash docs/results/low_speed_chip/run.sh MPMCUT   (a copy of build/mpmcut, so no build relinks it)
+set -euo pipefail
+cd "$(dirname "$0")/../../.."
+MPMCUT=$1
+c=forces_h0.1mm_vc12.6mpmin
+R=docs/results/low_speed_chip/records OUT=results/low_speed_chip
+mkdir -p "$OUT"
+material="--material-file docs/results/calibration_speed_ends/best_material.toml"
+echo "node $c --cells-per-feed 16 $material --contact-detection node" |
+  tools/validate_variants.sh "$MPMCUT" "$R" "$OUT" &
+if [ ! -f "$R/inertia/$c/summary.json" ]; then
+  # The t0/16 case of validate with only the inertia number changed.
+  "$MPMCUT" validate --cells-per-feed 16 $material --contact-detection penalty --conditions $c \
+    --out "$OUT/inertia_cases" --list > /dev/null
+  case_file=$(ls "$OUT"/inertia_cases/cases/$c.toml 2>/dev/null || true)
+  [ -n "$case_file" ] || { echo "run.sh: validate --list wrote no case file"; exit 1; }
+  sed 's/^mass_scaling = "auto".*/mass_scaling = "auto"\nmass_scaling_inertia_number = 0.0005  # this study: a quarter of the default/' \
+    "$case_file" > "$OUT/inertia_$c.toml"
+  "$MPMCUT" run "$OUT/inertia_$c.toml" --out "$OUT/inertia_$c" --threads 1 --keep-complete > "$OUT/inertia_$c.log" 2>&1
+  mkdir -p "$R/inertia/$c"
+  cp "$OUT/inertia_$c"/{summary.json,forces.csv,scene.toml} "$R/inertia/$c/"
+fi
+wait
