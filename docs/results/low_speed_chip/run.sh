@@ -4,7 +4,8 @@
 # shear_localisation (penalty contact, speed-ends material, crack gap, mass scaling to inertia number 0.002):
 #   node:     the node contact instead of the penalty contact
 #   inertia:  mass scaling to inertia number 0.0005 instead of 0.002 (inertia x ~2200 instead of x 8825)
-# Both at once, one thread each. Resumable: a run with a record is not run again, an interrupted one resumes
+#   mu0.2:    Coulomb coefficient 0.2 instead of 0.35 (does the sticking rake contact drive the thickening?)
+# Two at a time, one thread each. Resumable: a run with a record is not run again, an interrupted one resumes
 # from its checkpoint. Records in docs/results/low_speed_chip/records/<variant>/<condition>.
 # usage: bash docs/results/low_speed_chip/run.sh MPMCUT   (a copy of build/mpmcut, so no build relinks it)
 set -euo pipefail
@@ -14,7 +15,8 @@ c=forces_h0.1mm_vc12.6mpmin
 R=docs/results/low_speed_chip/records OUT=results/low_speed_chip
 mkdir -p "$OUT"
 material="--material-file docs/results/calibration_speed_ends/best_material.toml"
-echo "node $c --cells-per-feed 16 $material --contact-detection node" |
+printf '%s\n' "node $c --cells-per-feed 16 $material --contact-detection node" \
+  "mu0.2 $c --cells-per-feed 16 $material --contact-detection penalty --friction 0.2" |
   tools/validate_variants.sh "$MPMCUT" "$R" "$OUT" &
 if [ ! -f "$R/inertia/$c/summary.json" ]; then
   # The t0/16 case of validate with only the inertia number changed.
