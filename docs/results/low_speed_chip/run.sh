@@ -4,19 +4,28 @@
 # shear_localisation (penalty contact, speed-ends material, crack gap, mass scaling to inertia number 0.002):
 #   node:     the node contact instead of the penalty contact
 #   inertia:  mass scaling to inertia number 0.0005 instead of 0.002 (inertia x ~2200 instead of x 8825)
-#   mu0.2:    Coulomb coefficient 0.2 instead of 0.35 (does the sticking rake contact drive the thickening?)
+#   mu0.2:    Coulomb coefficient 0.2 instead of 0.35 (does the sticking rake contact drive the thickening?),
+#             also at t0/24 (mu0.2_t0_24)
+#   nodamage: the speed-ends material without damage (no_damage_material.toml), at the matrix's cell, t0/16 and
+#             t0/24 (nodamage, nodamage_t0_16, nodamage_t0_24), at 12.6 and 381.3 m/min: does the damage softening
+#             of the shear zones, whose Hillerborg length is the cell, make the chip depend on the cell?
 # Two at a time, one thread each. Resumable: a run with a record is not run again, an interrupted one resumes
 # from its checkpoint. Records in docs/results/low_speed_chip/records/<variant>/<condition>.
 # usage: bash docs/results/low_speed_chip/run.sh MPMCUT   (a copy of build/mpmcut, so no build relinks it)
 set -euo pipefail
 cd "$(dirname "$0")/../../.."
 MPMCUT=$1
-c=forces_h0.1mm_vc12.6mpmin
+c=forces_h0.1mm_vc12.6mpmin c2=forces_h0.1mm_vc381.3mpmin
 R=docs/results/low_speed_chip/records OUT=results/low_speed_chip
 mkdir -p "$OUT"
 material="--material-file docs/results/calibration_speed_ends/best_material.toml"
+no_damage="--material-file docs/results/low_speed_chip/no_damage_material.toml --contact-detection penalty"
 printf '%s\n' "node $c --cells-per-feed 16 $material --contact-detection node" \
-  "mu0.2 $c --cells-per-feed 16 $material --contact-detection penalty --friction 0.2" |
+  "mu0.2 $c --cells-per-feed 16 $material --contact-detection penalty --friction 0.2" \
+  "nodamage $c $no_damage" "nodamage $c2 $no_damage" \
+  "nodamage_t0_16 $c --cells-per-feed 16 $no_damage" "nodamage_t0_16 $c2 --cells-per-feed 16 $no_damage" \
+  "nodamage_t0_24 $c --cells-per-feed 24 $no_damage" "nodamage_t0_24 $c2 --cells-per-feed 24 $no_damage" \
+  "mu0.2_t0_24 $c --cells-per-feed 24 $material --contact-detection penalty --friction 0.2" |
   tools/validate_variants.sh "$MPMCUT" "$R" "$OUT" &
 if [ ! -f "$R/inertia/$c/summary.json" ]; then
   # The t0/16 case of validate with only the inertia number changed.
