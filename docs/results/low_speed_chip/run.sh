@@ -40,3 +40,5 @@ if [ ! -f "$R/inertia/$c/summary.json" ]; then
   cp "$OUT/inertia_$c"/{summary.json,forces.csv,scene.toml} "$R/inertia/$c/"
 fi
 wait
+# The sharp-edge runs (one at a time, after the others): run_sharp.sh.
+bash docs/results/low_speed_chip/run_sharp.sh "$MPMCUT" all
