@@ -9,9 +9,17 @@
 #   nodamage: the speed-ends material without damage (no_damage_material.toml), at the matrix's cell, t0/16 and
 #             t0/24 (nodamage, nodamage_t0_16, nodamage_t0_24), at 12.6 and 381.3 m/min: does the damage softening
 #             of the shear zones, whose Hillerborg length is the cell, make the chip depend on the cell?
+#   tanh:     the library's ti64-sima-ozel-2010 (Lee & Lin's Johnson-Cook set with the TANH strain softening of
+#             Calamaz et al., its own damage) at the matrix's cell, t0/16 and t0/24 (tanh, tanh_t0_16, tanh_t0_24),
+#             at 12.6 m/min, and at 381.3 m/min at the matrix's cell and t0/16: does a flow law that softens at
+#             large strain make the chip converge, and what does it do to the speed trend?
+#   leelin:   its base set without the softening (ti64-lee-lin-1998-sima) at the matrix's cell and t0/16 (leelin,
+#             leelin_t0_16): the control, is it the softening or the hardening and damage of that set?
+#   rate:     the speed-ends material with Lee & Lin's strain-rate constant C = 0.035 instead of 0.012
+#             (rate_material.toml) at the matrix's cell and t0/16 (rate, rate_t0_16): is it the rate sensitivity?
 # Two at a time, one thread each. Resumable: a run with a record is not run again, an interrupted one resumes
 # from its checkpoint. Records in docs/results/low_speed_chip/records/<variant>/<condition>.
-# usage: bash docs/results/low_speed_chip/run.sh MPMCUT   (a copy of build/mpmcut, so no build relinks it)
+# usage: bash docs/results/low_speed_chip/run.sh MPMCUT [all]   (a copy of build/mpmcut, so no build relinks it)
 set -euo pipefail
 cd "$(dirname "$0")/../../.."
 MPMCUT=$1
@@ -19,13 +27,20 @@ c=forces_h0.1mm_vc12.6mpmin c2=forces_h0.1mm_vc381.3mpmin
 R=docs/results/low_speed_chip/records OUT=results/low_speed_chip
 mkdir -p "$OUT"
 material="--material-file docs/results/calibration_speed_ends/best_material.toml"
+tanh="--material ti64-sima-ozel-2010 --contact-detection penalty"
+leelin="--material ti64-lee-lin-1998-sima --contact-detection penalty"
+rate="--material-file docs/results/low_speed_chip/rate_material.toml --contact-detection penalty"
 no_damage="--material-file docs/results/low_speed_chip/no_damage_material.toml --contact-detection penalty"
 printf '%s\n' "node $c --cells-per-feed 16 $material --contact-detection node" \
   "mu0.2 $c --cells-per-feed 16 $material --contact-detection penalty --friction 0.2" \
   "nodamage $c $no_damage" "nodamage $c2 $no_damage" \
   "nodamage_t0_16 $c --cells-per-feed 16 $no_damage" "nodamage_t0_16 $c2 --cells-per-feed 16 $no_damage" \
   "nodamage_t0_24 $c --cells-per-feed 24 $no_damage" "nodamage_t0_24 $c2 --cells-per-feed 24 $no_damage" \
-  "mu0.2_t0_24 $c --cells-per-feed 24 $material --contact-detection penalty --friction 0.2" |
+  "mu0.2_t0_24 $c --cells-per-feed 24 $material --contact-detection penalty --friction 0.2" \
+  "tanh $c $tanh" "tanh_t0_16 $c --cells-per-feed 16 $tanh" "tanh_t0_24 $c --cells-per-feed 24 $tanh" \
+  "tanh $c2 $tanh" "tanh_t0_16 $c2 --cells-per-feed 16 $tanh" \
+  "leelin $c $leelin" "leelin_t0_16 $c --cells-per-feed 16 $leelin" \
+  "rate $c $rate" "rate_t0_16 $c --cells-per-feed 16 $rate" |
   tools/validate_variants.sh "$MPMCUT" "$R" "$OUT" &
 if [ ! -f "$R/inertia/$c/summary.json" ]; then
   # The t0/16 case of validate with only the inertia number changed.
@@ -40,5 +55,5 @@ if [ ! -f "$R/inertia/$c/summary.json" ]; then
   cp "$OUT/inertia_$c"/{summary.json,forces.csv,scene.toml} "$R/inertia/$c/"
 fi
 wait
-# The sharp-edge runs (one at a time, after the others): run_sharp.sh.
-bash docs/results/low_speed_chip/run_sharp.sh "$MPMCUT" all
+# The sharp-edge runs (one at a time, after the others): run_sharp.sh ("all" adds its t0/24 cell).
+bash docs/results/low_speed_chip/run_sharp.sh "$MPMCUT" "${2:-}"
