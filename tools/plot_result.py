@@ -6,7 +6,8 @@ usage: /usr/bin/python3 plot_result.py RESULT_DIR [--snapshots last|all|N,M,...]
 Writes into RESULT_DIR (docs/results.md):
   chip_<field>_NNNNNN.png   one picture per chosen snapshot and field (temperature, plastic_strain, damage),
   chip_NNNNNN.png           the three fields side by side for the same snapshot,
-  forces.png                cutting and thrust force per unit width against tool travel.
+  forces.png                cutting and thrust force per unit width against tool travel,
+  chip_profile.png          the chip analysis's thickness profile with its peaks, valleys and left-out entry chip.
 The last snapshot is always drawn. Reads summary.json, scene.toml, forces.csv, particles.pvd and the VTU
 snapshots (meshio); needs numpy, matplotlib and meshio (Debian: python3-matplotlib, python3-meshio).
 """
@@ -14,6 +15,7 @@ import argparse
 import math
 import os
 import sys
+import textwrap
 import tomllib
 import xml.etree.ElementTree as ET
 
@@ -342,6 +344,56 @@ def plot_forces(result_dir, summary, process, tool):
     return out
 
 
+# ---------------------------------------------------------------- chip profile
+
+def plot_profile(result_dir, summary):
+    """The chip analysis's thickness profile (summary.json chip.profile): what the segmentation degree, the teeth
+    and the mean thickness were measured on, the left-out entry chip shaded."""
+    chip = (summary or {}).get("chip") or {}
+    prof = chip.get("profile") or {}
+    thickness = prof.get("thickness_m")
+    if not thickness:
+        print("note: summary.json has no chip profile (not a cutting run, or analysed before profiles were "
+              "written: mpmcut analyze DIR adds it): no chip_profile.png", file=sys.stderr)
+        return None
+    um = 1e6
+    start, spacing = float(prof.get("start_m") or 0.0), float(prof["spacing_m"])
+    s = (start + spacing * np.arange(len(thickness))) * um
+    t = np.asarray(thickness, dtype=float) * um
+    steady = int(prof.get("steady_samples") or len(t))
+    fig, ax = plt.subplots(figsize=(6.4, 3.4))
+    ax.plot(s, t, color="0.2", lw=1.2, label="thickness across the chip")
+    if steady < len(t):
+        ax.axvspan(s[steady - 1], s[-1], color="0.85", alpha=0.7, lw=0, label="entry chip, left out")
+    for key, marker, color, label in (("peak_positions_m", "^", ps.COLOR_FT, "peaks"),
+                                      ("valley_positions_m", "v", ps.COLOR_FC, "valleys")):
+        pos = np.asarray(prof.get(key) or [], dtype=float) * um
+        if len(pos):
+            ax.plot(pos, np.interp(pos, s, t), marker, color=color, ms=7, ls="none", label=label)
+    mean = chip.get("mean_thickness_m")
+    if mean:
+        ax.axhline(mean * um, color="0.5", ls="--", lw=0.8, label=f"mean {mean * um:.0f} µm")
+    gs, pitch = chip.get("segmentation_degree"), chip.get("pitch_m")
+    facts = [f"{chip.get('classification', '?')} ({chip.get('classification_confidence', '?')})"]
+    if gs is not None:
+        facts.append(f"Gs = {gs:.2f}")
+    facts.append(f"{chip.get('segments', 0)} teeth")
+    if pitch:
+        facts.append(f"pitch {pitch * um:.0f} µm")
+    ax.set_title("Chip profile: " + ",  ".join(facts), fontsize=9.5)
+    ax.set_xlabel("Distance along the chip from the rake face's edge (µm)")
+    ax.set_ylabel("Chip thickness (µm)")
+    ax.set_ylim(0, max(t.max(), 1.0) * 1.3)
+    ax.legend(loc="upper left", frameon=False, ncol=3, fontsize=7.5)
+    note = prof.get("note")
+    if note:  # below the axes, wrapped to their width
+        ax.annotate(textwrap.fill("note: " + note, 110), xy=(0.0, -0.22), xycoords="axes fraction", va="top",
+                    fontsize=6.5, color="0.35")
+    out = os.path.join(result_dir, "chip_profile.png")
+    ps.save(fig, out)
+    return out
+
+
 # ---------------------------------------------------------------- main
 
 def main(argv):
@@ -376,6 +428,9 @@ def main(argv):
     for index, time_s, path in chosen:
         written += plot_snapshot(d, index, time_s, path, tool, process, material)
     f = plot_forces(d, summary, process, tool)
+    if f:
+        written.append(f)
+    f = plot_profile(d, summary)
     if f:
         written.append(f)
     if not written:

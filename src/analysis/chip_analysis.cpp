@@ -194,13 +194,23 @@ ChipAnalysis analyze_chip(const Particles& p, const ChipAnalysisSetup& s) {
   a.narrow_width_m = th.narrow_excursion_cells * h;
   // A one-piece chip's free end is the chip cut while the tool entered: it tapers from the workpiece's
   // edge and its shape is not the cut's (a smooth chip's tapered end was counted as a deep tooth). By
-  // volume constancy the chip of e t0 of travel holds the area e t0^2; that tail is left out. A broken
-  // chip's profile ends at a fracture, not at the entry, and is measured whole.
+  // volume constancy the chip of e t0 of travel holds the area e t0^2; that tail is left out, but never
+  // more than half the profile's area: a short cut (4 t0 of travel) would otherwise keep about one t0 of
+  // chip, too little to show two teeth of a chip that the pictures show serrated. A broken chip's profile
+  // ends at a fracture, not at the entry, and is measured whole.
   a.steady_samples = a.profile.thickness_m.size();
   if (a.pieces <= 1 && a.steady_samples > 0) {
-    const std::size_t kept = samples_before_tail_area(a.profile, th.entry_travel_t0 * t0 * t0);
+    const double entry_area = th.entry_travel_t0 * t0 * t0;
+    const double half_area = 0.5 * profile_area(a.profile);
+    const std::size_t kept = samples_before_tail_area(a.profile, std::min(entry_area, half_area));
     if (kept >= 3) {
       a.steady_samples = kept;
+      if (half_area < entry_area)
+        a.profile_note = fmt::format(
+            "a short cut: the chip holds less than twice the chip of the tool's entry ({:g} t0 of travel), so "
+            "only its free half ({:.1f} t0^2) is left out and the measured part may include the end of the "
+            "entry chip",
+            th.entry_travel_t0, half_area / (t0 * t0));
     } else {
       a.profile_note = fmt::format(
           "the chip holds little more than the chip of the tool's entry ({:g} t0 of travel): its profile is "
@@ -388,7 +398,8 @@ nlohmann::json chip_json(const ChipAnalysis& a) {
                                                         : nlohmann::json(nullptr)},
                   {"note", a.profile_note.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.profile_note)},
                   {"peak_positions_m", nlohmann::json::array()},
-                  {"valley_positions_m", nlohmann::json::array()}};
+                  {"valley_positions_m", nlohmann::json::array()},
+                  {"thickness_m", a.profile.thickness_m}};
   for (std::size_t k : g.extrema.peaks) j["profile"]["peak_positions_m"].push_back(a.profile.position_m(k));
   for (std::size_t k : g.extrema.valleys) j["profile"]["valley_positions_m"].push_back(a.profile.position_m(k));
   j["thresholds"] = {{"prominence_m", a.prominence_m},

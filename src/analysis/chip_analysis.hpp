@@ -112,7 +112,7 @@ struct ChipAnalysis {
   // Leading profile samples the segmentation, thickness ratio and pitch are measured on: all of them,
   // or those before the entry chip's tail (ChipThresholds::entry_travel_t0).
   std::size_t steady_samples = 0;
-  std::string profile_note;                          // non-empty when the entry chip could not be left out
+  std::string profile_note;                          // non-empty when the entry chip was not left out whole
   std::optional<double> chip_thickness_ratio;        // r = t0 / t_c, t_c = mean profile thickness
   std::optional<double> shear_angle_from_ratio_deg;  // tan phi = r cos a / (1 - r sin a)
   std::optional<double> chip_velocity_m_per_s;       // V r (continuity)

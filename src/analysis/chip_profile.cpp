@@ -236,6 +236,12 @@ std::size_t samples_before_tail_area(const ChipProfile& profile, double area) {
   return tail < area ? 0 : k;
 }
 
+double profile_area(const ChipProfile& profile) {
+  double area = 0.0;
+  for (double t : profile.thickness_m) area += t * profile.spacing_m;
+  return area;
+}
+
 Segmentation measure_segmentation(const ChipProfile& profile, double prominence, double min_pitch,
                                   double narrow_width) {
   Segmentation s;

@@ -74,6 +74,8 @@ void remove_narrow_excursions(std::vector<double>& y, double prominence, std::si
 // thickness x spacing from the last sample back, m^2 per m of width) is cut off; 0 when the tail
 // takes it all. Used to leave out the chip cut during the tool's entry (docs/analysis.md).
 std::size_t samples_before_tail_area(const ChipProfile& profile, double area);
+// The chip area the profile holds: the sum of thickness x spacing (m^2 per m of width).
+double profile_area(const ChipProfile& profile);
 
 struct Segmentation {
   std::vector<double> thickness_m;         // the line measured: the profile without its narrow excursions

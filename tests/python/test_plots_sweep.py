@@ -4,8 +4,8 @@ usage: /usr/bin/python3 test_plots_sweep.py MPMCUT_BINARY SCRATCH_DIR
 Checks: the sweep exits 0; sweep.csv has one row per case, each complete with finite forces; sweep.md exists;
 the chip galleries are drawn; every run drew its own pictures;
 forces_vs_speed.png, chip_vs_speed.png and chip_map.png are non-trivial PNGs; `mpmcut plot` writes forces.png and
-the chip pictures (temperature, plastic strain, damage, combined) of the last snapshot, all non-trivial; the chip
-map gives continuous, serrated and discontinuous chips three different colours.
+the chip pictures (temperature, plastic strain, damage, combined) of the last snapshot and the chip profile, all
+non-trivial; the chip map gives continuous, serrated and discontinuous chips three different colours.
 """
 import csv
 import os
@@ -88,6 +88,7 @@ def main(binary, scratch):
     for field in ("temperature", "plastic_strain", "damage"):
         check_png(os.path.join(case_dir, f"chip_{field}_{index}.png"), min_colours=40)
     check_png(os.path.join(case_dir, f"chip_{index}.png"), min_colours=40)
+    check_png(os.path.join(case_dir, "chip_profile.png"), min_colours=10)
     # A missing directory is a clear error, not a crash.
     p = subprocess.run([binary, "plot", os.path.join(scratch, "no_such_dir")], capture_output=True, text=True)
     if p.returncode == 0:

@@ -148,19 +148,49 @@ TEST(ChipAnalysis, TheEntryChipAtTheFreeEndIsLeftOut) {
   EXPECT_TRUE(a.profile_note.empty());
   const nlohmann::json j = chip_json(a);
   EXPECT_EQ(j["profile"]["steady_samples"], a.steady_samples);
+  ASSERT_EQ(j["profile"]["thickness_m"].size(), a.profile.thickness_m.size());  // the whole traced profile
+  EXPECT_EQ(j["profile"]["thickness_m"].back().get<double>(), a.profile.thickness_m.back());
   EXPECT_LT(a.steady_samples, a.profile.thickness_m.size());
   // The whole profile still holds the entry's tooth: the thresholds alone would not remove it.
   const Segmentation whole = measure_segmentation(a.profile, a.prominence_m, a.min_pitch_m, a.narrow_width_m);
   EXPECT_GT(*whole.degree, 0.4);
 }
 
-// A chip shorter than the entry's (early in a cut) is measured whole, and says so.
-TEST(ChipAnalysis, AChipOfOnlyTheEntryIsMeasuredWholeWithANote) {
+// A chip that holds less than twice the entry's area (early in a cut, or a short cut) loses only its free
+// half, and says so; a chip of a few samples is measured whole.
+TEST(ChipAnalysis, AShortChipLosesOnlyItsFreeHalfWithANote) {
   const ChipAnalysisSetup s = synthetic_setup();
+  // The profile runs from 150 to 300 um: 2.25 t0^2, less than twice 3 t0^2.
   const ChipAnalysis a = analyze_chip(chip_particles_of(300e-6, [](double) { return 150e-6; }), s);
-  EXPECT_EQ(a.steady_samples, a.profile.thickness_m.size());
-  EXPECT_NE(a.profile_note.find("entry"), std::string::npos) << a.profile_note;
+  const double kept_area = static_cast<double>(a.steady_samples) * a.profile.spacing_m * 150e-6;
+  EXPECT_NEAR(kept_area, 0.5 * profile_area(a.profile), 150e-6 * a.profile.spacing_m);
+  EXPECT_NE(a.profile_note.find("short cut"), std::string::npos) << a.profile_note;
   EXPECT_EQ(chip_json(a)["profile"]["note"], a.profile_note);
+  const ChipAnalysis tiny = analyze_chip(chip_particles_of(165e-6, [](double) { return 150e-6; }), s);
+  ASSERT_GT(tiny.profile.thickness_m.size(), 0u);
+  EXPECT_EQ(tiny.steady_samples, tiny.profile.thickness_m.size());
+  EXPECT_NE(tiny.profile_note.find("measured whole"), std::string::npos) << tiny.profile_note;
+}
+
+// A short cut's serrated chip (the transition series cuts 4 t0): a 4.2 t0^2 profile with 60 um teeth. Leaving
+// out the 3 t0^2 of the entry would keep about 85 um of chip, one tooth, and call it continuous; half the
+// profile keeps about 150 um, more than two teeth.
+TEST(ChipAnalysis, AShortCutsSawtoothChipIsStillSerrated) {
+  const ChipAnalysisSetup s = synthetic_setup();
+  const double h = 120e-6, H = 160e-6, pitch = 60e-6;
+  const ChipAnalysis a = analyze_chip(
+      chip_particles_of(450e-6, [&](double y) { return h + (H - h) * std::fmod(y, pitch) / pitch; }), s);
+  ASSERT_EQ(a.pieces, 1u);
+  EXPECT_EQ(a.classification, "serrated") << a.classification_note;
+  EXPECT_GE(a.segmentation.segments, 2u);
+  EXPECT_NEAR(*a.segmentation.pitch_m, pitch, kD);
+  EXPECT_NEAR(*a.segmentation.degree, (H - h) / H, 0.08);
+  EXPECT_NE(a.profile_note.find("short cut"), std::string::npos) << a.profile_note;
+  // The whole entry area left out: fewer than two teeth remain.
+  ChipProfile entry_rule = a.profile;
+  entry_rule.thickness_m.resize(samples_before_tail_area(a.profile, 3.0 * kT0 * kT0));
+  const Segmentation few = measure_segmentation(entry_rule, a.prominence_m, a.min_pitch_m, a.narrow_width_m);
+  EXPECT_LT(few.segments, 2u);
 }
 
 TEST(ChipAnalysis, BlocksSeparatedByFailedRowsAreDiscontinuous) {
