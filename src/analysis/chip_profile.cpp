@@ -215,6 +215,9 @@ void remove_narrow_excursions(std::vector<double>& y, double prominence, std::si
   for (std::size_t i = 1; i + 1 < n; ++i) {
     for (std::size_t w = 1; w <= max_width && i + w < n; ++w) {
       const double left = y[i - 1], right = y[i + w];
+      // A flicker returns to where it left; a saw-tooth's drop does not (it falls from a crest and climbs
+      // the next tooth's flank, whose first samples may lie p above the valley on a steep tooth).
+      if (std::abs(right - left) >= prominence) continue;
       bool below = true, above = true;
       for (std::size_t k = i; k < i + w; ++k) {
         below = below && y[k] <= std::min(left, right) - prominence;

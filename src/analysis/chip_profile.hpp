@@ -66,8 +66,10 @@ void merge_close_extrema(const std::vector<double>& y, ProfileExtrema& extrema, 
 // the free surface) measures a thickness far from its neighbours' for one or two stations. Such an
 // excursion is narrower than a cell, which the grid cannot carry as a tooth. Every run of at most
 // `max_width` samples that lies at least `prominence` below both samples beside it (or at least
-// `prominence` above both) is replaced by the straight line between those two samples; runs that
-// touch the first or last sample stay. A real tooth's valley, wider than a cell, is kept.
+// `prominence` above both), and whose two neighbours differ by less than `prominence` (it returns to
+// where it left), is replaced by the straight line between those two samples; runs that touch the first
+// or last sample stay. A real tooth's valley, wider than a cell, is kept, and so is a steep saw-tooth's
+// valley, which lies between a crest and the next tooth's flank.
 void remove_narrow_excursions(std::vector<double>& y, double prominence, std::size_t max_width);
 
 // The number of leading samples left when the profile's tail holding `area` of chip (the sum of

@@ -170,6 +170,12 @@ TEST(ChipProfile, NarrowExcursionsUpAndAtTheEnds) {
   const std::vector<double> want{5, 5, 5, 5, 6, 6 + 1.0 / 3.0, 6 + 2.0 / 3.0, 7, 7, 80};
   ASSERT_EQ(y.size(), want.size());
   for (std::size_t k = 0; k < y.size(); ++k) EXPECT_NEAR(y[k], want[k], 1e-12) << k;
+  // A steep saw-tooth's valley as a 5 um particle grid quantises it: its flank climbs p within two samples,
+  // but it lies between a crest and a flank, not between two equal samples: kept.
+  std::vector<double> steep{155, 155, 105, 115, 115, 120, 130, 130, 140, 150, 155, 155, 105, 115};
+  const std::vector<double> steep_before = steep;
+  remove_narrow_excursions(steep, 10, 2);
+  EXPECT_EQ(steep, steep_before);
   std::vector<double> first{50, 5, 5};  // a first sample is the profile's cut end: kept
   remove_narrow_excursions(first, 10, 2);
   EXPECT_EQ(first, (std::vector<double>{50, 5, 5}));
