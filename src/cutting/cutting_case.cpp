@@ -14,14 +14,16 @@ namespace mpmcut {
 
 namespace {
 
-// The workpiece material of a [cutting] case: a [[material]] of the file, else a library set.
+// The workpiece material of a [cutting] case: a [[material]] of the file, else a library set. A set of the file
+// may start from a library set or from an earlier set of the file (`library = ...`).
 MaterialParameters cutting_material(TableReader& top, TableReader& cutting, const CuttingParameters& params) {
   const std::string& name = params.material;
-  const MaterialLibrary& library = builtin_material_library();
+  MaterialLibrary library = builtin_material_library();
   std::optional<MaterialParameters> found;
   for (TableReader& t : top.array_of_tables("material")) {
     MaterialParameters m = read_material(t, library);
     if (m.name == name) found = m;
+    library.add(std::move(m));
   }
   const MaterialParameters* m = found ? &*found : library.find(name);
   if (m != nullptr) {

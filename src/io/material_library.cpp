@@ -54,8 +54,9 @@ void MaterialLibrary::add_file(std::string_view toml_text, const std::string& so
 }
 
 const MaterialParameters* MaterialLibrary::find(std::string_view set_name) const {
-  for (const auto& m : sets_)
-    if (m.name == set_name) return &m;
+  // The latest definition of a name wins (add(): a case's set over the library's).
+  for (auto m = sets_.rbegin(); m != sets_.rend(); ++m)
+    if (m->name == set_name) return &*m;
   return nullptr;
 }
 

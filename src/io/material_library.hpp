@@ -16,6 +16,9 @@ class MaterialLibrary {
   // Adds every [[material]] of a library file; a set may start from an earlier one (`library = ...`).
   // Throws InputError (naming `source_name`) for invalid or duplicate sets.
   void add_file(std::string_view toml_text, const std::string& source_name);
+  // Adds one set, e.g. a case file's, so that a later [[material]] of the same file may start from it. A set of
+  // the same name as an earlier one shadows it in find() (a case may redefine a library set's name).
+  void add(MaterialParameters set) { sets_.push_back(std::move(set)); }
 
   const MaterialParameters* find(std::string_view set_name) const;  // nullptr if unknown
   std::vector<std::string> names() const;                           // in file order

@@ -401,10 +401,12 @@ Scene read_scene_tables(TableReader& top) {
   scene.thermal = read_thermal(top.optional_table("thermal"));
   scene.body_force = top.vec2("body_force", scene.body_force, Range::closed(-1e12, 1e12, "m/s^2"));
 
-  const MaterialLibrary& library = builtin_material_library();
+  // A set may start from a library set or from an earlier set of this file (`library = ...`).
+  MaterialLibrary library = builtin_material_library();
   for (TableReader& t : top.array_of_tables("material")) {
     MaterialParameters m = read_material(t, library);
     if (scene.material_index(m.name) >= 0) t.fail("name", fmt::format("duplicate material name \"{}\"", m.name));
+    library.add(m);
     // Conduction divides by the heat capacity m c of each node.
     if (scene.thermal.conduction)
       t.check("specific_heat", m.specific_heat > 0.0, "positive (J/(kg K)) when thermal.conduction = true",

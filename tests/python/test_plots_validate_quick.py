@@ -7,7 +7,8 @@ Checks:
   --h / --speeds-m-per-min select (intersected); a value outside the matrix is an error naming the option;
   --material and --friction reach the case files, an unknown set or a friction out of range exits 2; a
   --material-file set reaches the case files with its [[material]] tables (the case reads on its own), a broken
-  file is reported at its line and key, two sets need --material.
+  file is reported at its line and key, two sets need --material; --material-key changes keys of the chosen set
+  (a set "trial" starting from it in every case file, which reads on its own), and a bad key or value exits 2.
 - Resumption: `--quick --conditions A,B`, then `--quick` (its 5 conditions, a superset): A and B are not launched
   again (their logs unchanged, origin "earlier run"), the other 3 run; the report says 5 of 37 complete, 3 of 35
   force and 2 of 2 chip-type conditions, 3 run by this invocation; a third part of one of them runs nothing and
@@ -280,6 +281,28 @@ def main(binary, scratch):
     if "--material" not in bad.stderr or "a, b" not in bad.stderr:
         fail("a material file of two sets without --material must ask for one and name both")
     validate(binary, "--list", "--material-file", os.path.join(scratch, "no-such-file.toml"), "--out", mine, expect=2)
+
+    # --material-key: the chosen set (here the file's) with a key changed, as a set "trial" that starts from it in
+    # every case file, which reads on its own; an unknown key, a value out of range or no number exits 2.
+    with open(sets, "w") as f:
+        f.write('[[material]]\nname = "my-ti64"\nlibrary = "ti64-seo-2005"\nfracture_energy = 15.0e3\n')
+    keyed = os.path.join(scratch, "keyed")
+    validate(binary, "--list", "--material-file", sets, "--material-key", "jc_C=0.035", "--material-key", "jc_m=1.1",
+             "--conditions", "forces_h0.1mm_vc100mpmin", "--out", keyed)
+    case = os.path.join(keyed, "cases", "forces_h0.1mm_vc100mpmin.toml")
+    with open(case) as f:
+        text = f.read()
+    if ('name = "trial"\nlibrary = "my-ti64"\njc_C = 0.035\njc_m = 1.1' not in text or 'material = "trial"' not in text
+            or 'name = "my-ti64"' not in text):
+        fail("--material-key: the trial set did not reach the case file:\n" + text[:1200])
+    check = subprocess.run([binary, "run", case, "--check"], capture_output=True, text=True, timeout=120)
+    if check.returncode != 0:
+        fail(f"the case file written with --material-key does not read on its own: {check.stderr}")
+    for key, words in (("jc_Q=1", ["jc_Q", "unknown key"]), ("jc_C=-1", ["jc_C", "must be in"]),
+                       ("jc_C", ["--material-key 'jc_C'", "KEY=VALUE"]), ("jc_C=abc", ["KEY=VALUE"])):
+        bad = validate(binary, "--list", "--material-key", key, "--out", keyed, expect=2)
+        if not all(w in bad.stderr for w in words):
+            fail(f"--material-key {key}: the error must name {words}: {bad.stderr}")
 
     # Resumption: part one, then the quick set (a superset) keeps part one.
     out = os.path.join(scratch, "validation")

@@ -5,6 +5,7 @@
 
 #include "../support/parse_errors.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -308,6 +309,31 @@ TEST(SceneValidation, DuplicateNames) {
   expect_error(twice, "name = \"b\"\nmaterial = \"m\"\ndisk", {"key 'body[1].name'", "duplicate body name \"b\""});
   expect_error(kBase + "[[rigid_body]]\nname = \"b\"\npolygon = [[0, 0], [1, 0], [0, 1]]\n", "name = \"b\"\npolygon",
                {"key 'rigid_body[0].name'", "duplicate body name"});
+}
+
+// A [[material]] of a case may start from an earlier set of the same file (validate --material-key writes a set
+// "trial" that starts from the --material-file set the case carries); a later set is not yet known.
+TEST(SceneParser, ACaseSetMayStartFromAnEarlierSetOfTheFile) {
+  const Scene s = parse_scene(kBase + "[[material]]\nname = \"m2\"\nlibrary = \"m\"\nyoungs_modulus = 3.0\n", "case.toml");
+  ASSERT_EQ(s.materials.size(), 2u);
+  EXPECT_DOUBLE_EQ(s.materials[1].youngs_modulus, 3.0);
+  EXPECT_DOUBLE_EQ(s.materials[1].density, s.materials[0].density);
+  EXPECT_DOUBLE_EQ(s.materials[1].poisson_ratio, s.materials[0].poisson_ratio);
+  expect_error(edit("library = \"elastic-unit\"", "library = \"later\"") +
+                   "[[material]]\nname = \"later\"\nlibrary = \"elastic-unit\"\n",
+               "library = \"later\"", {"key 'material[0].library'", "no material set \"later\""});
+  // The cutting preset's workpiece, too: a set of the file, changed from another set of the file.
+  const std::string cut = "[[material]]\nname = \"fitted\"\nlibrary = \"ti64-cutting\"\njc_B = 440e6\n"
+                          "[[material]]\nname = \"trial\"\nlibrary = \"fitted\"\njc_C = 0.035\n"
+                          "[cutting]\nmaterial = \"trial\"\ncutting_speed = 2.0\n"
+                          "uncut_chip_thickness = 0.1e-3\ncut_length = 0.1e-3\ncell_size = 20e-6\n";
+  const Scene cutting = parse_case(cut, "case.toml").scene;
+  const auto trial = std::find_if(cutting.materials.begin(), cutting.materials.end(),
+                                  [](const MaterialParameters& m) { return m.name == "trial"; });
+  ASSERT_NE(trial, cutting.materials.end());
+  EXPECT_DOUBLE_EQ(trial->jc_B, 440e6);   // from the file's set
+  EXPECT_DOUBLE_EQ(trial->jc_C, 0.035);   // changed
+  EXPECT_DOUBLE_EQ(trial->jc_A, builtin_material_library().find("ti64-cutting")->jc_A);  // from the library
 }
 
 TEST(SceneValidation, UnknownLibrarySetListsTheAvailableOnes) {
