@@ -19,20 +19,16 @@ namespace {
 MaterialParameters cutting_material(TableReader& top, TableReader& cutting, const CuttingParameters& params) {
   const std::string& name = params.material;
   MaterialLibrary library = builtin_material_library();
-  std::optional<MaterialParameters> found;
-  for (TableReader& t : top.array_of_tables("material")) {
-    MaterialParameters m = read_material(t, library);
-    if (m.name == name) found = m;
-    library.add(std::move(m));
-  }
-  const MaterialParameters* m = found ? &*found : library.find(name);
+  for (TableReader& t : top.array_of_tables("material")) library.add(read_material(t, library));
+  // The file's last set of that name, else the library's (find(): the latest definition wins).
+  const MaterialParameters* m = library.find(name);
   if (m != nullptr) {
     // The workpiece starts solid: at or above the melting point the flow stress is zero.
     cutting.check("initial_temperature", params.initial_temperature, temperature_range(*m));
     return *m;
   }
   std::string known;
-  for (const auto& n : library.names()) known += (known.empty() ? "" : ", ") + ("\"" + n + "\"");
+  for (const auto& n : builtin_material_library().names()) known += (known.empty() ? "" : ", ") + ("\"" + n + "\"");
   cutting.fail("material", fmt::format("no [[material]] and no library set named \"{}\"; library sets: {}", name, known));
 }
 
