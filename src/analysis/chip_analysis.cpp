@@ -225,6 +225,11 @@ ChipAnalysis analyze_chip(const Particles& p, const ChipAnalysisSetup& s) {
     steady.tangent.resize(a.steady_samples);
     a.segmentation = measure_segmentation(steady, a.prominence_m, a.min_pitch_m, a.narrow_width_m);
   }
+  a.area_mean_thickness_m = area_mean_thickness(a.profile, a.steady_samples, x, d, t0, frame.n);
+  if (a.area_mean_thickness_m && *a.area_mean_thickness_m > 0.0)
+    a.chip_thickness_ratio_from_area = t0 / *a.area_mean_thickness_m;
+  else
+    a.area_mean_thickness_m.reset();
   if (a.segmentation.mean_thickness_m) {
     const double r = t0 / *a.segmentation.mean_thickness_m;
     a.chip_thickness_ratio = r;
@@ -385,6 +390,8 @@ nlohmann::json chip_json(const ChipAnalysis& a) {
   j["pitch_m"] = optional_json(g.pitch_m);
   j["segmentation_frequency_Hz"] = optional_json(a.segmentation_frequency_Hz);
   j["chip_thickness_ratio"] = optional_json(a.chip_thickness_ratio);
+  j["area_mean_thickness_m"] = optional_json(a.area_mean_thickness_m);
+  j["chip_thickness_ratio_from_area"] = optional_json(a.chip_thickness_ratio_from_area);
   j["shear_angle_from_ratio_deg"] = optional_json(a.shear_angle_from_ratio_deg);
   j["chip_velocity_m_per_s"] = optional_json(a.chip_velocity_m_per_s);
   j["chip_velocity_from_particles_m_per_s"] = optional_json(a.chip_velocity_from_particles_m_per_s);
@@ -429,8 +436,9 @@ std::string chip_summary_text(const ChipAnalysis& a) {
                               a.time_s, a.tool_travel_m * 1e6, a.classification,
                               a.classification_confidence == "marginal" ? " (marginal: " + a.classification_note + ")" : "",
                               a.chip_particles, a.pieces);
-  s += fmt::format("  thickness: mean {}, peaks {}, valleys {}; segmentation degree Gs {}; {} segment(s), pitch {}\n",
-                   um(g.mean_thickness_m), um(g.peak_height_m), um(g.valley_height_m), num(g.degree, "{:.2f}"),
+  s += fmt::format("  thickness: mean {} (by area {}), peaks {}, valleys {}; segmentation degree Gs {}; {} segment(s), "
+                   "pitch {}\n",
+                   um(g.mean_thickness_m), um(a.area_mean_thickness_m), um(g.peak_height_m), um(g.valley_height_m), num(g.degree, "{:.2f}"),
                    g.segments, um(g.pitch_m));
   s += fmt::format("  chip thickness ratio r {}, shear angle from r {} deg, shear-band angle {} deg ({} band(s))\n",
                    num(a.chip_thickness_ratio, "{:.2f}"), num(a.shear_angle_from_ratio_deg, "{:.1f}"),

@@ -114,6 +114,11 @@ struct ChipAnalysis {
   std::size_t steady_samples = 0;
   std::string profile_note;                          // non-empty when the entry chip was not left out whole
   std::optional<double> chip_thickness_ratio;        // r = t0 / t_c, t_c = mean profile thickness
+  // The same part of the chip by its area: chip area across those samples / their length (area_mean_thickness),
+  // and t0 over it. Equal to the profile's mean where the chip is whole; larger where cross-sections stop at
+  // open cracks (the profile then measures the ligament).
+  std::optional<double> area_mean_thickness_m;
+  std::optional<double> chip_thickness_ratio_from_area;
   std::optional<double> shear_angle_from_ratio_deg;  // tan phi = r cos a / (1 - r sin a)
   std::optional<double> chip_velocity_m_per_s;       // V r (continuity)
   std::optional<double> chip_velocity_from_particles_m_per_s;  // mass-mean speed along the rake face

@@ -239,6 +239,53 @@ std::size_t samples_before_tail_area(const ChipProfile& profile, double area) {
   return tail < area ? 0 : k;
 }
 
+std::optional<double> area_mean_thickness(const ChipProfile& profile, std::size_t samples,
+                                          const std::vector<Vec2>& points, double particle_spacing, double window,
+                                          const Vec2& into_chip) {
+  const std::size_t n = std::min(samples, profile.thickness_m.size());
+  if (n == 0 || profile.inner_m.size() < profile.thickness_m.size() ||
+      profile.tangent.size() < profile.thickness_m.size())
+    return std::nullopt;
+  const std::size_t all = profile.thickness_m.size();
+  const double step = profile.spacing_m;
+  // The walk keeps the handedness of its normal: n = sign (-t_y, t_x) at every station.
+  const Vec2& t0 = profile.tangent.front();
+  const double hand = into_chip.dot(Vec2(-t0.y(), t0.x())) < 0.0 ? -1.0 : 1.0;
+  const std::size_t half_window = static_cast<std::size_t>(std::floor(0.5 * window / step));
+  // reach: the thickest cross-section within the window; curvature: the inner surface's, > 0 where the chip
+  // curls towards its free side (the tangent turns towards n), from the turn of the tangent over the window.
+  std::vector<double> reach(all, 0.0), curvature(all, 0.0);
+  for (std::size_t k = 0; k < all; ++k) {
+    const std::size_t lo = k > half_window ? k - half_window : 0, hi = std::min(all - 1, k + half_window);
+    reach[k] = *std::max_element(profile.thickness_m.begin() + lo, profile.thickness_m.begin() + hi + 1);
+    const Vec2& t = profile.tangent[k];
+    if (hi > lo)
+      curvature[k] = hand * (profile.tangent[hi] - profile.tangent[lo]).dot(Vec2(-t.y(), t.x())) /
+                     (static_cast<double>(hi - lo) * step);
+  }
+  double area = 0.0;
+  for (const Vec2& x : points) {
+    std::size_t owner = all;
+    double nearest = step, offset = 0.0;  // a point farther than one step along from every station belongs to none
+    for (std::size_t k = 0; k < all; ++k) {
+      const Vec2& t = profile.tangent[k];
+      const Vec2 r = x - profile.inner_m[k];
+      const double along = r.dot(t), across = hand * r.dot(Vec2(-t.y(), t.x()));
+      if (across < -particle_spacing || across > reach[k]) continue;
+      if ((k == 0 && along < -0.5 * step) || (k + 1 == all && along > 0.5 * step)) continue;
+      if (std::abs(along) < nearest) {
+        nearest = std::abs(along);
+        owner = k;
+        offset = across;
+      }
+    }
+    // Where the chip curls, a station's slab narrows (widens) across the chip by the factor 1 - curvature x
+    // offset: a point there stands for that much more (less) thickness per length of inner surface.
+    if (owner < n) area += 1.0 / std::max(0.2, 1.0 - curvature[owner] * offset);
+  }
+  return area * particle_spacing * particle_spacing / (static_cast<double>(n) * step);
+}
+
 double profile_area(const ChipProfile& profile) {
   double area = 0.0;
   for (double t : profile.thickness_m) area += t * profile.spacing_m;

@@ -79,6 +79,21 @@ std::size_t samples_before_tail_area(const ChipProfile& profile, double area);
 // The chip area the profile holds: the sum of thickness x spacing (m^2 per m of width).
 double profile_area(const ChipProfile& profile);
 
+// The chip's mean thickness by its area, as a chip weighed and measured in length would give it: the area
+// of the points that lie across the first `samples` stations, divided by their length samples x spacing.
+// Each point stands for a square of side particle_spacing and belongs to the station nearest to it along
+// the chip (smallest offset along that station's tangent, at most one step; the first and last stations
+// reach only half a step outwards), if it lies across that station's inner surface, from one spacing
+// inside it to the thickest cross-section within +-window/2 along the chip. A cross-section stops at an
+// open crack (it measures the ligament), while the segment beyond the crack is counted here; another turn
+// of a curled chip farther out is not. Where the chip curls, a point counts as the thickness it stands for
+// across its station (its area over the slab's width there, which shrinks with the inner surface's
+// curvature times its offset), so that a curled chip of thickness T reads T. `into_chip`: the unit normal towards the chip's free side at the
+// first station, as given to trace_chip_profile. Empty without stations or with samples = 0.
+std::optional<double> area_mean_thickness(const ChipProfile& profile, std::size_t samples,
+                                          const std::vector<Vec2>& points, double particle_spacing, double window,
+                                          const Vec2& into_chip);
+
 struct Segmentation {
   std::vector<double> thickness_m;         // the line measured: the profile without its narrow excursions
   ProfileExtrema extrema;                  // indices into thickness_m (and the profile)

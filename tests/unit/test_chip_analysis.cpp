@@ -85,6 +85,9 @@ TEST(ChipAnalysis, StraightChipIsContinuousWithItsThicknessRatio) {
   EXPECT_NEAR(*a.segmentation.mean_thickness_m, tc, 1e-12);
   EXPECT_EQ(*a.segmentation.degree, 0.0);
   EXPECT_NEAR(*a.chip_thickness_ratio, kT0 / tc, 1e-9);
+  // A whole chip reads the same by area (within one particle row at the measured part's ends).
+  EXPECT_NEAR(*a.area_mean_thickness_m, tc, 0.02 * tc);
+  EXPECT_NEAR(chip_json(a)["chip_thickness_ratio_from_area"].get<double>(), kT0 / *a.area_mean_thickness_m, 1e-12);
   EXPECT_NEAR(*a.shear_angle_from_ratio_deg, std::atan(kT0 / tc) * 180.0 / std::numbers::pi, 1e-6);
   EXPECT_NEAR(*a.chip_velocity_m_per_s, 20.0 * kT0 / tc, 1e-9);
   EXPECT_NEAR(*a.chip_velocity_from_particles_m_per_s, 12.0, 1e-9);  // (v - v_tool) along the rake face

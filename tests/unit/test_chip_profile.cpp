@@ -254,5 +254,68 @@ TEST(ChipProfile, TraceOfASawtoothChipRecoversItsTeeth) {
   EXPECT_NEAR(*s.degree, (H - h) / H, 0.06);
 }
 
+// --- Thickness by area ------------------------------------------------------------------------
+
+TEST(ChipProfile, AreaThicknessOfAStraightChipIsItsThickness) {
+  const double d = 5e-6;
+  const std::vector<Vec2> x = straight_chip(200, 24, d);  // 120 um thick
+  // Stations between particle rows, so that each row belongs to exactly one station.
+  const ChipProfile p = trace_chip_profile(x, Vec2(0.0, 10.2 * d), Vec2(0, 1), Vec2(-1, 0), d, d, 600e-6, 100e-6);
+  ASSERT_GT(p.thickness_m.size(), 150u);
+  // Not the last stations: the cloud ends inside the last one's slab.
+  for (std::size_t samples : {std::size_t{20}, std::size_t{150}})
+    EXPECT_NEAR(*area_mean_thickness(p, samples, x, d, 100e-6, Vec2(-1, 0)), 24 * d, 1e-9) << samples << " samples";
+  EXPECT_FALSE(area_mean_thickness(p, 0, x, d, 100e-6, Vec2(-1, 0)));
+}
+
+TEST(ChipProfile, AreaThicknessCountsTheSegmentBeyondAnOpenCrack) {
+  // A straight 120 um chip on the rake face x = 0 with open cracks every 100 um: slits 2.5 spacings wide at
+  // 45 deg from the free surface down to 40 um from the rake face, as between the segments of a serrated chip.
+  // A cross-section that meets a crack stops there (the ligament), so the profile's mean is too thin; the area
+  // counts the segment beyond it and gives the cloud's area over the measured length.
+  const double d = 5e-6, T = 120e-6, ligament = 40e-6, pitch = 100e-6, opening = 2.5 * d;
+  std::vector<Vec2> x;
+  for (int j = 0; j < 200; ++j)
+    for (int i = 0; i < 24; ++i) {
+      const Vec2 q(-(i + 0.5) * d, (j + 0.5) * d);
+      const double depth = -q.x();  // from the rake face
+      // Distance to the nearest crack line y = y_c + (depth - ligament) (45 deg), for depth > ligament.
+      const double u = q.y() - (depth - ligament);
+      const double to_crack = std::abs(u - pitch * std::round(u / pitch)) / std::sqrt(2.0);
+      if (depth > ligament && to_crack < 0.5 * opening) continue;
+      x.push_back(q);
+    }
+  const ChipProfile p = trace_chip_profile(x, Vec2(0.0, 100.2 * d), Vec2(0, -1), Vec2(-1, 0), d, d, 600e-6, 100e-6);
+  const std::size_t n = 80;  // 400 um: four pitches, away from the cloud's ends
+  ASSERT_GE(p.thickness_m.size(), n);
+  std::size_t inside = 0;  // points in the 80 stations' rows: y from 100.2 d - 80 d + 0.5 d to 100.2 d + 0.5 d
+  for (const Vec2& q : x)
+    if (q.y() > (100.2 - 79.5) * d && q.y() < (100.2 + 0.5) * d) ++inside;
+  const double expected = static_cast<double>(inside) * d * d / (n * d);
+  const double by_area = *area_mean_thickness(p, n, x, d, 100e-6, Vec2(-1, 0));
+  EXPECT_NEAR(by_area, expected, 0.01 * expected);
+  EXPECT_GT(by_area, 0.85 * T);  // the cracks take little area (12 %) ...
+  double profile_mean = 0.0;
+  for (std::size_t k = 0; k < n; ++k) profile_mean += p.thickness_m[k] / n;
+  EXPECT_LT(profile_mean, 0.85 * by_area);  // ... but stop many cross-sections at the ligament
+}
+
+TEST(ChipProfile, AreaThicknessOfACurledChipIsItsThicknessAcross) {
+  // The curled chip of TraceFollowsACurledChip: thickness T across an arc whose inner (rake) side is the outer
+  // rim. Its area over the rim's length is T (1 - T / (2 (R + T))) = 0.83 T; counted across the curl, T.
+  const double d = 2.5e-6, R = 200e-6, T = 100e-6;
+  const Vec2 centre(-R - T, 0.0);
+  std::vector<Vec2> x;
+  for (double r = R + 0.5 * d; r < R + T; r += d) {
+    const double dtheta = d / r;
+    for (double theta = -0.2; theta < 150.0 * std::numbers::pi / 180.0; theta += dtheta)
+      x.push_back(centre + r * Vec2(std::cos(theta), std::sin(theta)));
+  }
+  const ChipProfile p = trace_chip_profile(x, Vec2(0.0, 0.0), Vec2(0, 1), Vec2(-1, 0), d, d, 600e-6, 100e-6);
+  ASSERT_GT(p.thickness_m.size(), 200u);
+  const std::size_t n = p.thickness_m.size() - 20;  // not the arc's end face
+  EXPECT_NEAR(*area_mean_thickness(p, n, x, d, 100e-6, Vec2(-1, 0)), T, 0.03 * T);
+}
+
 }  // namespace
 }  // namespace mpmcut
