@@ -19,7 +19,7 @@ namespace {
 MaterialParameters cutting_material(TableReader& top, TableReader& cutting, const CuttingParameters& params) {
   const std::string& name = params.material;
   MaterialLibrary library = builtin_material_library();
-  for (TableReader& t : top.array_of_tables("material")) library.add(read_material(t, library));
+  read_case_materials(top, library);
   // The file's last set of that name, else the library's (find(): the latest definition wins).
   const MaterialParameters* m = library.find(name);
   if (m != nullptr) {

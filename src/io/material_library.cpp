@@ -41,6 +41,20 @@ MaterialParameters read_material(TableReader& t, const MaterialLibrary& library)
   return m;
 }
 
+std::vector<MaterialParameters> read_case_materials(
+    TableReader& top, MaterialLibrary& library, const std::function<void(TableReader&, const MaterialParameters&)>& check) {
+  std::vector<MaterialParameters> sets;
+  for (TableReader& t : top.array_of_tables("material")) {
+    MaterialParameters m = read_material(t, library);
+    if (std::any_of(sets.begin(), sets.end(), [&](const MaterialParameters& s) { return s.name == m.name; }))
+      t.fail("name", fmt::format("duplicate material name \"{}\" (an earlier [[material]] of this file has it)", m.name));
+    if (check) check(t, m);
+    library.add(m);
+    sets.push_back(std::move(m));
+  }
+  return sets;
+}
+
 void MaterialLibrary::add_file(std::string_view toml_text, const std::string& source_name) {
   toml::table root = parse_toml(toml_text, source_name);
   auto source = std::make_shared<InputSource>(InputSource{source_name, {}});

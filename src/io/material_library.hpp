@@ -2,6 +2,7 @@
 // Named material parameter sets (Ti-6Al-4V Johnson–Cook sets with their sources, generic elastic
 // materials), read from materials/*.toml. The built-in library is compiled into the program.
 // A library file has the same [[material]] tables as a case file; see docs/materials.md.
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -36,5 +37,13 @@ const MaterialLibrary& builtin_material_library();
 // definition. The keys and their rules are the physics models' parameter tables (io/material_keys.hpp);
 // fracture_toughness K_IC is converted to fracture_energy G_f = K_IC^2 (1 - nu^2) / E.
 MaterialParameters read_material(TableReader& table, const MaterialLibrary& library);
+
+// Reads every [[material]] of a case file, in order, into `library` (each may start from a library set or from an
+// earlier set of the file, and shadows a library set of its name) and returns them. `check`, when given, is
+// called with each set's table and the set read, for the caller's own checks. A name defined twice in the file
+// is an error at the second definition.
+std::vector<MaterialParameters> read_case_materials(
+    TableReader& top, MaterialLibrary& library,
+    const std::function<void(TableReader&, const MaterialParameters&)>& check = {});
 
 }  // namespace mpmcut

@@ -403,16 +403,12 @@ Scene read_scene_tables(TableReader& top) {
 
   // A set may start from a library set or from an earlier set of this file (`library = ...`).
   MaterialLibrary library = builtin_material_library();
-  for (TableReader& t : top.array_of_tables("material")) {
-    MaterialParameters m = read_material(t, library);
-    if (scene.material_index(m.name) >= 0) t.fail("name", fmt::format("duplicate material name \"{}\"", m.name));
-    library.add(m);
+  scene.materials = read_case_materials(top, library, [&](TableReader& t, const MaterialParameters& m) {
     // Conduction divides by the heat capacity m c of each node.
     if (scene.thermal.conduction)
       t.check("specific_heat", m.specific_heat > 0.0, "positive (J/(kg K)) when thermal.conduction = true",
               m.specific_heat);
-    scene.materials.push_back(std::move(m));
-  }
+  });
 
   // Bodies and rigid bodies share one namespace: outputs (forces, fields) are keyed by name.
   std::vector<std::string> names;

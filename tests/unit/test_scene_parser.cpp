@@ -334,6 +334,15 @@ TEST(SceneParser, ACaseSetMayStartFromAnEarlierSetOfTheFile) {
   EXPECT_DOUBLE_EQ(trial->jc_B, 440e6);   // from the file's set
   EXPECT_DOUBLE_EQ(trial->jc_C, 0.035);   // changed
   EXPECT_DOUBLE_EQ(trial->jc_A, builtin_material_library().find("ti64-cutting")->jc_A);  // from the library
+  // A name the file defines twice is an error there too (it may shadow a library set's name once).
+  const std::string twice = "[[material]]\nname = \"ti64-cutting\"\nlibrary = \"ti64-cutting\"\njc_B = 440e6\n" + cut +
+                            "[[material]]\nname = \"fitted\"\nlibrary = \"ti64-cutting\"\n";
+  const std::string message = error_of(twice);
+  const auto second = twice.rfind("name = \"fitted\"");
+  const auto line = 1 + std::count(twice.begin(), twice.begin() + static_cast<std::ptrdiff_t>(second), '\n');
+  EXPECT_TRUE(message.starts_with("case.toml:" + std::to_string(line) + ":")) << message;
+  EXPECT_NE(message.find("key 'material[3].name'"), std::string::npos) << message;
+  EXPECT_NE(message.find("duplicate material name \"fitted\""), std::string::npos) << message;
 }
 
 TEST(SceneValidation, UnknownLibrarySetListsTheAvailableOnes) {
