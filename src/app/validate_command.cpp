@@ -81,8 +81,10 @@ struct Condition : CuttingCondition {
     return fc() && ft() && *fc() != 0.0 ? std::optional<double>(*ft() / *fc()) : std::nullopt;
   }
   // Simulated chip thickness t_c = t0 / r, um.
-  std::optional<double> chip_thickness_um() const {
-    const auto& r = result.chip_thickness_ratio;
+  std::optional<double> chip_thickness_um() const { return thickness_um(result.chip_thickness_ratio); }
+  // The same by area (t_A = t0 / r_A, docs/analysis.md), um.
+  std::optional<double> chip_thickness_by_area_um() const { return thickness_um(result.chip_thickness_ratio_from_area); }
+  std::optional<double> thickness_um(const std::optional<double>& r) const {
     return r && *r > 0.0 ? std::optional<double>(h_mm * 1e3 / *r) : std::nullopt;
   }
   // A complete force condition with both forces: the ones the errors and goals are computed over.
@@ -526,7 +528,8 @@ int run_validation(const ValidateOptions& o) {
                         "force_window", "Fc_drift_in_window_percent", "Ft_drift_in_window_percent",
                         "rake_normal_force_N_per_mm", "rake_friction_force_N_per_mm", "edge_flank_cutting_force_N_per_mm",
                         "edge_flank_thrust_force_N_per_mm", "rake_friction_work_per_travel_N_per_mm",
-                        "edge_flank_friction_work_per_travel_N_per_mm", "rake_mean_slip_speed_m_per_s", "chip_thickness_ratio", "chip_thickness_um", "cell_size_um", "mass_scaling_factor",
+                        "edge_flank_friction_work_per_travel_N_per_mm", "rake_mean_slip_speed_m_per_s", "chip_thickness_ratio", "chip_thickness_um",
+                        "chip_thickness_by_area_um", "cell_size_um", "mass_scaling_factor",
                         "max_temperature_K", "chip_classification", "wall_time_s", "source_revision", "result_dir", "message"};
   for (const Condition& c : conditions) {
     if (c.origin.empty()) continue;
@@ -544,6 +547,7 @@ int run_validation(const ValidateOptions& o) {
                                format_number(c.result.tool_force_split.edge_flank_friction_work_N_per_mm),
                                format_number(c.result.tool_force_split.rake_slip_speed_m_per_s),
                                format_number(c.result.chip_thickness_ratio), format_number(c.chip_thickness_um()),
+                               format_number(c.chip_thickness_by_area_um()),
                                format_number(c.result.cell_size_um), format_number(c.result.mass_scaling_factor),
                                format_number(c.result.max_temperature_K), c.result.chip_classification,
                                format_number(c.result.wall_time_s), c.result.source_revision, (out / c.id).string(),

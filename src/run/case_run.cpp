@@ -105,9 +105,15 @@ bool CaseRun::advance() {
     const double hist_dt = scene.output.history_interval;
     const double eps = 1e-12 * end;
     try {
-      // Land exactly on the next output time (and on the end time).
+      // Land exactly on the next output time (and on the end time). A snapshot time within eps of the next
+      // history time is that history time: both are running sums of their intervals, which differ in the last
+      // bits even where one interval is a multiple of the other, and the steps (so the results, which a
+      // serrated cut turns from round-off into per cent) would then depend on the number of snapshots.
       double target = std::min(next_snapshot_, end);
-      if (hist_dt > 0) target = std::min(target, next_history_);
+      if (hist_dt > 0) {
+        const double history = std::min(next_history_, end);
+        target = std::abs(target - history) <= eps ? history : std::min(target, history);
+      }
       if (tuner_) tuner_->before_step();
       sim_.step(target - sim_.time());
       if (tuner_) tuner_->after_step();

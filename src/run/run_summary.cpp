@@ -231,6 +231,7 @@ ChipHeadline chip_headline(const RunSummary& s) {
   h.pitch_m = section_number(sec, "chip", "pitch_m");
   h.segmentation_frequency_Hz = section_number(sec, "chip", "segmentation_frequency_Hz");
   h.chip_thickness_ratio = section_number(sec, "chip", "chip_thickness_ratio");
+  h.chip_thickness_ratio_from_area = section_number(sec, "chip", "chip_thickness_ratio_from_area");
   if (sec.contains("temperature") && sec["temperature"].is_object()) {
     h.shear_zone_max_K = section_number(sec["temperature"], "primary_shear_zone", "max_K");
     h.tool_chip_max_K = section_number(sec["temperature"], "tool_chip_interface", "max_K");

@@ -94,6 +94,19 @@ std::string number_text(const std::optional<double>& x, int digits = 4) {
 }
 std::string percent(const std::optional<double>& e) { return e ? fmt::format("{:+.1f}", 100.0 * *e) : std::string(); }
 
+}  // namespace
+
+double parameter_unit(const CalibrationParameter& p, double value) {
+  return p.log_scale ? std::log(value / p.min) / std::log(p.max / p.min) : (value - p.min) / (p.max - p.min);
+}
+
+double parameter_value(const CalibrationParameter& p, double u) {
+  if (u == parameter_unit(p, p.start)) return p.start;
+  return p.log_scale ? p.min * std::pow(p.max / p.min, u) : p.min + u * (p.max - p.min);
+}
+
+namespace {
+
 class Calibrator {
  public:
   Calibrator(const CalibrationConfig& c, fs::path out, int jobs) : c_(c), out_(std::move(out)), jobs_(jobs) {}
@@ -101,15 +114,8 @@ class Calibrator {
   int run();
 
  private:
-  // Parameter value <-> the optimizer's variable in [0, 1] (uniform, or uniform in log for log_scale).
-  double value_of(std::size_t i, double u) const {
-    const CalibrationParameter& p = c_.parameters[i];
-    return p.log_scale ? p.min * std::pow(p.max / p.min, u) : p.min + u * (p.max - p.min);
-  }
-  double u_of(std::size_t i, double value) const {
-    const CalibrationParameter& p = c_.parameters[i];
-    return p.log_scale ? std::log(value / p.min) / std::log(p.max / p.min) : (value - p.min) / (p.max - p.min);
-  }
+  double value_of(std::size_t i, double u) const { return parameter_value(c_.parameters[i], u); }
+  double u_of(std::size_t i, double value) const { return parameter_unit(c_.parameters[i], value); }
 
   ConditionRunSettings settings_for(const std::vector<double>& values) const;
   std::vector<ConditionResult> run_conditions(const std::vector<MeasuredForces>& conditions,

@@ -21,6 +21,12 @@ struct CalibrationParameter {
   std::string location;     // "config.toml:12:1" for messages
 };
 
+// A parameter's value at the optimizer's variable u in [0, 1] (uniform, or uniform in log for log_scale), and back.
+// At the u of its start value the value is the start value exactly: the log-scale round trip changes the last bit
+// (0.035 came back as 0.034999999999999996), and a serrated cut turns such a difference into a different force.
+double parameter_value(const CalibrationParameter& p, double u);
+double parameter_unit(const CalibrationParameter& p, double value);
+
 struct CalibrationConfig {
   std::filesystem::path file;
   std::string set_name;          // name of the resulting [[material]] set

@@ -259,6 +259,7 @@ CaseResult read_case_result(const fs::path& dir, const fs::path& log_file, int e
   if (chip.pitch_m) r.pitch_um = *chip.pitch_m * 1e6;
   if (chip.segmentation_frequency_Hz) r.frequency_kHz = *chip.segmentation_frequency_Hz * 1e-3;
   r.chip_thickness_ratio = chip.chip_thickness_ratio;
+  r.chip_thickness_ratio_from_area = chip.chip_thickness_ratio_from_area;
   return r;
 }
 
