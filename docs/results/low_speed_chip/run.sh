@@ -11,7 +11,7 @@
 #             of the shear zones, whose Hillerborg length is the cell, make the chip depend on the cell?
 #   tanh:     the library's ti64-sima-ozel-2010 (Lee & Lin's Johnson-Cook set with the TANH strain softening of
 #             Calamaz et al., its own damage) at the matrix's cell, t0/16 and t0/24 (tanh, tanh_t0_16, tanh_t0_24),
-#             at 12.6 m/min, at 381.3 m/min at the matrix's cell, t0/16 and t0/24, and at t0/16 at 39.9, 100 and
+#             at 12.6 m/min, at 381.3 m/min at the matrix's cell, t0/16, t0/24 and t0/32, and at t0/16 at 39.9, 100 and
 #             150 m/min: does a flow law that softens at large strain make the chip converge, and what does it do
 #             to the speed trend?
 #   leelin:   its base set without the softening (ti64-lee-lin-1998-sima) at the matrix's cell and t0/16 (leelin,
@@ -40,6 +40,7 @@ printf '%s\n' "node $c --cells-per-feed 16 $material --contact-detection node" \
   "mu0.2_t0_24 $c --cells-per-feed 24 $material --contact-detection penalty --friction 0.2" \
   "tanh $c $tanh" "tanh_t0_16 $c --cells-per-feed 16 $tanh" "tanh_t0_24 $c --cells-per-feed 24 $tanh" \
   "tanh $c2 $tanh" "tanh_t0_16 $c2 --cells-per-feed 16 $tanh" "tanh_t0_24 $c2 --cells-per-feed 24 $tanh" \
+  "tanh_t0_32 $c2 --cells-per-feed 32 $tanh" \
   "tanh_t0_16 forces_h0.1mm_vc100mpmin --cells-per-feed 16 $tanh" \
   "tanh_t0_16 forces_h0.1mm_vc150mpmin --cells-per-feed 16 $tanh" \
   "tanh_t0_16 forces_h0.1mm_vc39.9mpmin --cells-per-feed 16 $tanh" \
