@@ -11,6 +11,7 @@
 #include "analysis/chip_analysis.hpp"
 #include "run/run_case.hpp"
 #include "io/input_error.hpp"
+#include "analysis/chip_over_time.hpp"
 #include "run/run_summary.hpp"
 #include "io/pvd_writer.hpp"
 #include "run/case_loading.hpp"
@@ -86,6 +87,9 @@ int analyze(const fs::path& dir, const std::string& snapshot) {
       analyze_chip(snap.particles, chip_analysis_setup(scene, *loaded.cutting, displacement, snap.time_s));
 
   std::cout << fmt::format("{} ({})\n", dir.string(), entry.file) << chip_summary_text(a);
+  // The run's own samples over its steady window (analysed while it ran; a snapshot gives one instant).
+  if (const auto over_time = summary.sections.find("chip_over_time"); over_time != summary.sections.end())
+    std::cout << chip_over_time_text(*over_time);
   nlohmann::json chip = chip_json(a), temperature = temperature_json(a);
   chip["source"] = entry.file;
   temperature["source"] = entry.file;

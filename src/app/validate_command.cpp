@@ -530,7 +530,8 @@ int run_validation(const ValidateOptions& o) {
                         "edge_flank_thrust_force_N_per_mm", "rake_friction_work_per_travel_N_per_mm",
                         "edge_flank_friction_work_per_travel_N_per_mm", "rake_mean_slip_speed_m_per_s", "chip_thickness_ratio", "chip_thickness_um",
                         "chip_thickness_by_area_um", "cell_size_um", "mass_scaling_factor",
-                        "max_temperature_K", "chip_classification", "wall_time_s", "source_revision", "result_dir", "message"};
+                        "max_temperature_K", "chip_classification", "segmentation_degree", "segmentation_degree_mean",
+                        "segmentation_degree_min", "segmentation_degree_max", "wall_time_s", "source_revision", "result_dir", "message"};
   for (const Condition& c : conditions) {
     if (c.origin.empty()) continue;
     runs_table.rows.push_back({c.id, c.kind, fmt::format("{:g}", c.speed_m_per_s), fmt::format("{:g}", c.speed_m_per_min()),
@@ -550,6 +551,10 @@ int run_validation(const ValidateOptions& o) {
                                format_number(c.chip_thickness_by_area_um()),
                                format_number(c.result.cell_size_um), format_number(c.result.mass_scaling_factor),
                                format_number(c.result.max_temperature_K), c.result.chip_classification,
+                               format_number(c.result.segmentation_degree, 3),
+                               format_number(c.result.segmentation_degree_mean, 3),
+                               format_number(c.result.segmentation_degree_min, 3),
+                               format_number(c.result.segmentation_degree_max, 3),
                                format_number(c.result.wall_time_s), c.result.source_revision, (out / c.id).string(),
                                c.result.message});
   }

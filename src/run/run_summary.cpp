@@ -232,6 +232,11 @@ ChipHeadline chip_headline(const RunSummary& s) {
   h.segmentation_frequency_Hz = section_number(sec, "chip", "segmentation_frequency_Hz");
   h.chip_thickness_ratio = section_number(sec, "chip", "chip_thickness_ratio");
   h.chip_thickness_ratio_from_area = section_number(sec, "chip", "chip_thickness_ratio_from_area");
+  if (sec.contains("chip_over_time") && sec["chip_over_time"].is_object()) {
+    h.segmentation_degree_mean = section_number(sec["chip_over_time"], "segmentation_degree", "mean");
+    h.segmentation_degree_min = section_number(sec["chip_over_time"], "segmentation_degree", "min");
+    h.segmentation_degree_max = section_number(sec["chip_over_time"], "segmentation_degree", "max");
+  }
   if (sec.contains("temperature") && sec["temperature"].is_object()) {
     h.shear_zone_max_K = section_number(sec["temperature"], "primary_shear_zone", "max_K");
     h.tool_chip_max_K = section_number(sec["temperature"], "tool_chip_interface", "max_K");

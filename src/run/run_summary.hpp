@@ -80,6 +80,8 @@ struct ChipHeadline {
   std::string classification_confidence;  // "clear" | "marginal" (at a threshold) | "" (not recorded)
   std::optional<double> segmentation_degree, pitch_m, segmentation_frequency_Hz, chip_thickness_ratio;
   std::optional<double> chip_thickness_ratio_from_area;  // t0 / t_A (chip thickness by area; not in older summaries)
+  // "chip_over_time": Gs over the steady window's states, mean, min, max (not in older summaries)
+  std::optional<double> segmentation_degree_mean, segmentation_degree_min, segmentation_degree_max;
   std::optional<double> shear_zone_max_K, tool_chip_max_K;  // "temperature" section
 };
 ChipHeadline chip_headline(const RunSummary& s);

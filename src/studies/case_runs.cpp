@@ -260,6 +260,9 @@ CaseResult read_case_result(const fs::path& dir, const fs::path& log_file, int e
   if (chip.segmentation_frequency_Hz) r.frequency_kHz = *chip.segmentation_frequency_Hz * 1e-3;
   r.chip_thickness_ratio = chip.chip_thickness_ratio;
   r.chip_thickness_ratio_from_area = chip.chip_thickness_ratio_from_area;
+  r.segmentation_degree_mean = chip.segmentation_degree_mean;
+  r.segmentation_degree_min = chip.segmentation_degree_min;
+  r.segmentation_degree_max = chip.segmentation_degree_max;
   return r;
 }
 

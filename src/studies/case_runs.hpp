@@ -47,6 +47,7 @@ struct CaseResult {
   std::optional<double> segmentation_degree, pitch_um, frequency_kHz;
   std::optional<double> chip_thickness_ratio;  // r = t0 / t_c from the chip analysis
   std::optional<double> chip_thickness_ratio_from_area;  // t0 / t_A, the chip's thickness by area (docs/analysis.md)
+  std::optional<double> segmentation_degree_mean, segmentation_degree_min, segmentation_degree_max;  // over time
   std::optional<double> wall_time_s;
   std::optional<double> steps;                           // explicit steps the run took
   std::optional<double> core_seconds_per_particle_step;  // threads / particle_steps_per_s (whole wall time)

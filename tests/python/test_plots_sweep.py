@@ -2,7 +2,8 @@
 
 usage: /usr/bin/python3 test_plots_sweep.py MPMCUT_BINARY SCRATCH_DIR
 Checks: the sweep exits 0; sweep.csv has one row per case, each complete with finite forces; sweep.md exists;
-the chip galleries are drawn; every run drew its own pictures;
+the chip galleries are drawn; every run drew its own pictures and analysed its chip over the steady window
+(summary.json chip_over_time, its Gs statistics in sweep.csv);
 forces_vs_speed.png, chip_vs_speed.png and chip_map.png are non-trivial PNGs; `mpmcut plot` writes forces.png and
 the chip pictures (temperature, plastic strain, damage, combined) of the last snapshot and the chip profile, all
 non-trivial; the chip map gives continuous, serrated and discontinuous chips three different colours.
@@ -60,6 +61,7 @@ def main(binary, scratch):
                 fail(f"{r['case']}: {key} = '{r[key]}' is not a number")
         if float(r["speed_m_per_min"]) != 60 * float(r["speed_m_per_s"]):
             fail(f"{r['case']}: m/min column inconsistent")
+        check_chip_over_time(os.path.join(out, r["case"]), r)
     if not os.path.exists(os.path.join(out, "sweep.md")):
         fail("sweep.md missing")
     for name in ("forces_vs_speed.png", "chip_vs_speed.png", "chip_map.png"):
@@ -95,6 +97,28 @@ def main(binary, scratch):
         fail("plot of a missing directory exited 0")
     check_chip_colours()
     print("PASS")
+
+
+def check_chip_over_time(case_dir, row):
+    """The run analysed its chip over the steady window: samples from its start on, Gs statistics consistent with
+    them and in sweep.csv."""
+    import json
+    with open(os.path.join(case_dir, "summary.json")) as f:
+        over = json.load(f).get("chip_over_time")
+    if not over or not over.get("samples"):
+        fail(f"{case_dir}: no chip_over_time samples in summary.json: {over}")
+    travels = [s["tool_travel_m"] for s in over["samples"]]
+    if travels[0] < over["first_tool_travel_m"] or travels != sorted(travels):
+        fail(f"{case_dir}: samples before the steady window or out of order: {travels}")
+    degrees = [s["segmentation_degree"] for s in over["samples"]
+               if s["steady"] and s["segmentation_degree"] is not None]
+    if over["steady_samples"] == 0 and not over["note"]:
+        fail(f"{case_dir}: no steady state and no note: {over}")
+    stats = over["segmentation_degree"]
+    if degrees and (abs(stats["mean"] - sum(degrees) / len(degrees)) > 1e-12 or stats["min"] != min(degrees)):
+        fail(f"{case_dir}: Gs statistics {stats} do not match the samples {degrees}")
+    if degrees and abs(float(row["segmentation_degree_mean"]) - stats["mean"]) > 1e-3:
+        fail(f"sweep.csv segmentation_degree_mean {row['segmentation_degree_mean']} != {stats['mean']}")
 
 
 def check_chip_colours():
