@@ -215,17 +215,24 @@ TEST(ChipProfile, TraceMeasuresAStraightChipExactly) {
     ASSERT_NEAR(p.thickness_m[k], 24 * d, 1e-12) << "sample " << k;
 }
 
-TEST(ChipProfile, TraceFollowsACurledChip) {
-  // A chip that curls away from the tool: an annulus arc of inner radius R (the rake side is the
-  // outer rim), thickness T, over 150 degrees. The walk must measure T across it, not its projection.
-  const double d = 5e-6, R = 200e-6, T = 100e-6;
-  const Vec2 centre(-R - T, 0.0);  // rake face x = 0 touches the outer rim at y = 0
+// A chip that curls away from the tool: an annulus arc of inner radius R, thickness T, over 150 degrees, particles
+// of spacing d; its rake side is the outer rim, which touches the rake face x = 0 at y = 0.
+std::vector<Vec2> curled_chip(double d, double R, double T) {
+  const Vec2 centre(-R - T, 0.0);
   std::vector<Vec2> x;
   for (double r = R + 0.5 * d; r < R + T; r += d) {
     const double dtheta = d / r;
     for (double theta = -0.2; theta < 150.0 * std::numbers::pi / 180.0; theta += dtheta)
       x.push_back(centre + r * Vec2(std::cos(theta), std::sin(theta)));
   }
+  return x;
+}
+
+TEST(ChipProfile, TraceFollowsACurledChip) {
+  // A chip that curls away from the tool: an annulus arc of inner radius R (the rake side is the
+  // outer rim), thickness T, over 150 degrees. The walk must measure T across it, not its projection.
+  const double d = 5e-6, R = 200e-6, T = 100e-6;
+  const std::vector<Vec2> x = curled_chip(d, R, T);
   const ChipProfile p = trace_chip_profile(x, Vec2(0.0, 0.0), Vec2(0, 1), Vec2(-1, 0), d, d, 600e-6, 100e-6);
   const double arc = (R + T) * 150.0 * std::numbers::pi / 180.0;
   ASSERT_GT(static_cast<double>(p.thickness_m.size()) * d, 0.8 * arc);
@@ -304,13 +311,7 @@ TEST(ChipProfile, AreaThicknessOfACurledChipIsItsThicknessAcross) {
   // The curled chip of TraceFollowsACurledChip: thickness T across an arc whose inner (rake) side is the outer
   // rim. Its area over the rim's length is T (1 - T / (2 (R + T))) = 0.83 T; counted across the curl, T.
   const double d = 2.5e-6, R = 200e-6, T = 100e-6;
-  const Vec2 centre(-R - T, 0.0);
-  std::vector<Vec2> x;
-  for (double r = R + 0.5 * d; r < R + T; r += d) {
-    const double dtheta = d / r;
-    for (double theta = -0.2; theta < 150.0 * std::numbers::pi / 180.0; theta += dtheta)
-      x.push_back(centre + r * Vec2(std::cos(theta), std::sin(theta)));
-  }
+  const std::vector<Vec2> x = curled_chip(d, R, T);
   const ChipProfile p = trace_chip_profile(x, Vec2(0.0, 0.0), Vec2(0, 1), Vec2(-1, 0), d, d, 600e-6, 100e-6);
   ASSERT_GT(p.thickness_m.size(), 200u);
   const std::size_t n = p.thickness_m.size() - 20;  // not the arc's end face
