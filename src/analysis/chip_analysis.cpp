@@ -350,11 +350,11 @@ ChipAnalysis analyze_chip(const Particles& p, const ChipAnalysisSetup& s) {
   return a;
 }
 
-namespace {
-
 nlohmann::json optional_json(const std::optional<double>& v) {
   return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
 }
+
+namespace {
 
 nlohmann::json peak_json(const PeakTemperature& t) {
   nlohmann::json j;

@@ -142,6 +142,9 @@ std::vector<char> chip_particles(const Particles& p, const ChipAnalysisSetup& se
 
 ChipAnalysis analyze_chip(const Particles& p, const ChipAnalysisSetup& setup);
 
+// A value, or null where it is undefined (the chip objects' convention).
+nlohmann::json optional_json(const std::optional<double>& v);
+
 // summary.json's "chip" and "temperature" objects (units in key names; undefined values null).
 nlohmann::json chip_json(const ChipAnalysis& a);
 nlohmann::json temperature_json(const ChipAnalysis& a);

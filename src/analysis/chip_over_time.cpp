@@ -11,7 +11,6 @@ namespace mpmcut {
 
 namespace {
 
-nlohmann::json number_or_null(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
 std::optional<double> number_of(const nlohmann::json& j, const char* key) {
   return j.contains(key) && j[key].is_number() ? std::optional<double>(j[key].get<double>()) : std::nullopt;
 }
@@ -22,10 +21,10 @@ nlohmann::json sample_json(const ChipSample& s) {
           {"classification", s.classification},
           {"segments", s.segments},
           {"steady", s.steady},
-          {"segmentation_degree", number_or_null(s.segmentation_degree)},
-          {"pitch_m", number_or_null(s.pitch_m)},
-          {"mean_thickness_m", number_or_null(s.mean_thickness_m)},
-          {"area_mean_thickness_m", number_or_null(s.area_mean_thickness_m)}};
+          {"segmentation_degree", optional_json(s.segmentation_degree)},
+          {"pitch_m", optional_json(s.pitch_m)},
+          {"mean_thickness_m", optional_json(s.mean_thickness_m)},
+          {"area_mean_thickness_m", optional_json(s.area_mean_thickness_m)}};
 }
 
 // Mean, min and max of one quantity over the samples that have it.
