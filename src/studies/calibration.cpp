@@ -96,6 +96,13 @@ std::string percent(const std::optional<double>& e) { return e ? fmt::format("{:
 
 }  // namespace
 
+ConditionRunSettings condition_run_settings(const CalibrationConfig& config, const MeasuredForces& condition) {
+  ConditionRunSettings s = config.runs;
+  if (const auto it = config.cells_per_feed_by_line.find(condition.line); it != config.cells_per_feed_by_line.end())
+    s.cells_per_feed = it->second;
+  return s;
+}
+
 double parameter_unit(const CalibrationParameter& p, double value) {
   return p.log_scale ? std::log(value / p.min) / std::log(p.max / p.min) : (value - p.min) / (p.max - p.min);
 }
@@ -164,12 +171,14 @@ ConditionRunSettings Calibrator::settings_for(const std::vector<double>& values)
 std::vector<ConditionResult> Calibrator::run_conditions(const std::vector<MeasuredForces>& conditions,
                                                         const std::vector<double>& values, const fs::path& dir,
                                                         bool& completed) {
-  const ConditionRunSettings settings = settings_for(values);
+  const ConditionRunSettings trial = settings_for(values);
   fs::create_directories(dir / "cases");
   fs::create_directories(dir / "logs");
   std::vector<ChildRun> runs;
   for (const MeasuredForces& m : conditions) {
     const CuttingCondition cc = cutting_condition(m);
+    ConditionRunSettings settings = trial;
+    settings.cells_per_feed = condition_run_settings(c_, m).cells_per_feed;
     const fs::path case_file = dir / "cases" / (cc.id + ".toml");
     write_file_atomically(case_file, [&](std::ostream& s) { s << condition_case_text(cc, settings); });
     ChildRun r;
@@ -372,11 +381,17 @@ void Calibrator::write_results(const Evaluation& best, const std::vector<Conditi
       global_stage ? fmt::format("{} evaluations ({} global {}, then {}), seed {}", c_.evaluations,
                                  c_.global_evaluations, c_.global_algorithm, c_.local_algorithm, c_.seed)
                    : fmt::format("{} evaluations ({} only), seed {}", c_.evaluations, c_.local_algorithm, c_.seed);
+  std::string own_resolutions;  // the conditions with their own cells across t0
+  for (const auto* list : {&c_.training, &c_.held_back})
+    for (const MeasuredForces& m : *list)
+      if (const auto it = c_.cells_per_feed_by_line.find(m.line); it != c_.cells_per_feed_by_line.end())
+        own_resolutions += fmt::format("{}t0/{} at {}", own_resolutions.empty() ? "" : ", ", it->second, condition_id(m));
   const std::string resolution =
       (c_.runs.quick ? "quick (cell = t0/4, 1 particle per cell, 4 cells of travel)"
        : c_.runs.cells_per_edge_radius > 0.0
            ? fmt::format("cell = min(t0/{}, r_n/{:g})", c_.runs.cells_per_feed, c_.runs.cells_per_edge_radius)
            : fmt::format("cell = t0/{} (no edge-radius limit)", c_.runs.cells_per_feed)) +
+      (own_resolutions.empty() || c_.runs.quick ? std::string() : " with " + own_resolutions + " instead") +
       // The contact only when chosen, so that a configuration without it reports as before.
       (c_.runs.contact_detection.empty() ? std::string()
                                          : fmt::format(", {} contact", c_.runs.contact_detection));

@@ -4,6 +4,7 @@
 // conditions (studies/measured_conditions.hpp, the path `mpmcut validate` uses). docs/calibration.md
 // describes the configuration and the outputs.
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -46,6 +47,10 @@ struct CalibrationConfig {
   unsigned seed = 1;             // NLopt's random seed (CRS2, ISRES, MLSL)
 
   ConditionRunSettings runs;     // resolution (quick / cells_per_feed), base material, friction
+  // A condition's own cells across t0 (its `cells_per_feed` in the training or held-back list), by its line in the
+  // measurement file; the others run at runs.cells_per_feed. A fast cut resolves its shear bands only at finer
+  // cells than a slow one (docs/results/low_speed_chip), so one value for all would be either wasteful or coarse.
+  std::map<int, int> cells_per_feed_by_line;
   int threads = 1;               // OpenMP threads of each run
 };
 
@@ -62,6 +67,9 @@ constexpr const char* kBuiltinForcesFile = "data/experiments/ti64_klippel2024_or
 // Runs (or resumes) the calibration into `out`: evaluations.csv, best_material.toml, calibration.md,
 // calibration_best.csv, cache.jsonl, evaluations/. Returns 0, 1 (the best set's held-back runs failed),
 // or 130 (interrupted: run the same command again to resume).
+// The run settings of one condition: `runs` with the condition's own cells_per_feed where it has one.
+ConditionRunSettings condition_run_settings(const CalibrationConfig& config, const MeasuredForces& condition);
+
 int run_calibration(const CalibrationConfig& config, const std::filesystem::path& out, int jobs);
 
 }  // namespace mpmcut

@@ -111,6 +111,31 @@ TEST(CalibrationConfig, ContactDetectionReachesTheCaseFiles) {
   EXPECT_NE(e.find("got \"glue\""), std::string::npos) << e;
 }
 
+// A condition's own cells_per_feed reaches its case file; the others keep [runs] cells_per_feed; a value outside
+// 2..100 is named with its line and key.
+TEST(CalibrationConfig, PerConditionCellsPerFeedReachesItsCaseFile) {
+  const std::string base = "name = \"fit\"\n" + kParameter +
+                           "[data]\ntraining = [{h_mm = 0.1, vc_m_per_min = 100.0},\n"
+                           "            {h_mm = 0.1, vc_m_per_min = 150, cells_per_feed = 24}]\n";
+  const CalibrationConfig c = read_calibration_config(write("own.toml", base), kMeasurements);
+  ASSERT_EQ(c.training.size(), 2u);
+  const ConditionRunSettings slow = condition_run_settings(c, c.training[0]);
+  const ConditionRunSettings fast = condition_run_settings(c, c.training[1]);
+  EXPECT_EQ(slow.cells_per_feed, 10);
+  EXPECT_EQ(fast.cells_per_feed, 24);
+  // t0 = 0.1 mm: t0/24 = 4.1667 um (r_n/4 = 9.8 um does not limit); t0/10 = 10 um, r_n/4 = 8.6 um limits.
+  const std::string fast_text = condition_case_text({"fast", "forces", 2.5, 0.1, 39.3}, fast);
+  EXPECT_NE(fast_text.find("cell_size = 4.1666"), std::string::npos) << fast_text;
+  const std::string slow_text = condition_case_text({"slow", "forces", 100.0 / 60.0, 0.1, 34.4}, slow);
+  EXPECT_NE(slow_text.find("cell_size = 8.59999"), std::string::npos) << slow_text;
+
+  const std::string e = error_of("name = \"fit\"\n" + kParameter +
+                                 "[data]\ntraining = [{h_mm = 0.1, vc_m_per_min = 100.0, cells_per_feed = 1}]\n");
+  EXPECT_NE(e.find("calibration.toml:"), std::string::npos) << e;
+  EXPECT_NE(e.find("cells_per_feed"), std::string::npos) << e;
+  EXPECT_NE(e.find("an integer from 2 to 100"), std::string::npos) << e;
+}
+
 TEST(CalibrationConfig, EmptyTrainingSet) {
   const std::string e = error_of("name = \"fit\"\n" + kParameter + "[data]\ntraining = []\n");
   EXPECT_NE(e.find("calibration.toml:"), std::string::npos) << e;
