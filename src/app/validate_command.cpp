@@ -95,6 +95,7 @@ struct ValidateOptions {
   bool quick = false;
   int cells_per_feed = 10;            // N: cell <= t0 / N (the cutting preset's t0/10)
   double cells_per_edge_radius = 4.0; // M: cell <= r_n / M
+  double cells_per_thermal_length = 0.0;  // K: cell <= sqrt(kappa t0 / V) / K; 0 = no such limit
   std::string out_dir;
   std::string records_dir;  // --records: complete runs kept as small committed files (studies/run_records.hpp)
   int jobs = 0;
@@ -159,6 +160,7 @@ ConditionRunSettings run_settings(const ValidateOptions& o) {
   s.quick = o.quick;
   s.cells_per_feed = o.cells_per_feed;
   s.cells_per_edge_radius = o.cells_per_edge_radius;
+  s.cells_per_thermal_length = o.cells_per_thermal_length;
   choose_material(o, s);
   for (const std::string& assignment : o.material_keys) {
     const auto eq = assignment.find('=');
@@ -287,15 +289,22 @@ Case condition_case(const Condition& c, const fs::path& case_file) { return pars
 
 std::string resolution_text(const ValidateOptions& o) {
   if (o.quick) return "--quick: cell = t0/4, 1 particle per cell, 4 cells of tool travel (a pipeline check)";
+  const std::string thermal =
+      o.cells_per_thermal_length > 0.0
+          ? fmt::format(" and at most l_th/K with K = {:g} cells across the thermal length l_th = sqrt(κ t0/V) "
+                        "(--cells-per-thermal-length; κ the workpiece's thermal diffusivity, V the cutting speed; "
+                        "every condition)",
+                        o.cells_per_thermal_length)
+          : std::string();
   return fmt::format(
       "cell = min(t0/N, r_n/M) with N = {} cells across the uncut chip thickness t0 (--cells-per-feed) and M = {:g} "
-      "cells across the measured edge radius r_n (--cells-per-edge-radius; force conditions), 2×2 particles per "
+      "cells across the measured edge radius r_n (--cells-per-edge-radius; force conditions){}, 2×2 particles per "
       "cell; chip-type conditions at t0/{} (the least the chip analysis needs to resolve segments; their 5 µm edge is "
       "the preset's, not measured, and sets no limit). Tool travel 6·max(t0, r_n) (the steady window, after "
       "max(40 % of the cut, 3 t0), is then at least 3 t0 long); workpiece height t0 + max(3 t0, 2 r_n), rounded up "
       "by the preset so that the machined surface lies on a row of grid nodes (docs/cutting.md, \"Grid phase of the "
       "tool tip\")",
-      o.cells_per_feed, o.cells_per_edge_radius, chip_cells_per_feed(o.cells_per_feed));
+      o.cells_per_feed, o.cells_per_edge_radius, thermal, chip_cells_per_feed(o.cells_per_feed));
 }
 
 // --list: the selected conditions with their resolution and estimated cost; writes their case files.
@@ -913,6 +922,11 @@ void add_validate_command(CLI::App& app) {
   v->add_option("--cells-per-edge-radius", o->cells_per_edge_radius,
                 "M: cell <= r_n/M, cells across the measured edge radius of the force conditions (default 4: the "
                 "edge's quarter arc then spans ~6 cells; 0 = no limit). cell = min(t0/N, r_n/M)")
+      ->check(CLI::Range(0.0, 100.0));
+  v->add_option("--cells-per-thermal-length", o->cells_per_thermal_length,
+                "K: cell <= l_th/K, cells across the thermal length l_th = sqrt(kappa t0/V), the width scale of an "
+                "adiabatic shear band (6.8 um at h = 0.1 mm, 381.3 m/min in Ti-6Al-4V; default 0 = no limit; 1.6 "
+                "resolves the fast cuts' shear bands to within ~4 % in Fc: docs/results.md)")
       ->check(CLI::Range(0.0, 100.0));
   v->add_option("--h", o->h_mm, "Run only these uncut chip thicknesses, mm (comma-separated, e.g. 0.1,0.04)")
       ->delimiter(',');

@@ -3,7 +3,6 @@
 #include <cmath>
 #include <fstream>
 #include <map>
-#include <optional>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -91,6 +90,9 @@ CalibrationConfig read_calibration_config(const fs::path& file, std::string_view
     c.runs.cells_per_edge_radius = r->number("cells_per_edge_radius", c.runs.cells_per_edge_radius);
     r->check("cells_per_edge_radius", c.runs.cells_per_edge_radius >= 0.0 && c.runs.cells_per_edge_radius <= 100.0,
              "a number from 0 (no limit) to 100", c.runs.cells_per_edge_radius);
+    c.runs.cells_per_thermal_length = r->number("cells_per_thermal_length", c.runs.cells_per_thermal_length);
+    r->check("cells_per_thermal_length", c.runs.cells_per_thermal_length >= 0.0 && c.runs.cells_per_thermal_length <= 100.0,
+             "a number from 0 (no limit) to 100", c.runs.cells_per_thermal_length);
     c.threads = static_cast<int>(r->integer("threads", 1));
     r->check("threads", c.threads >= 1 && c.threads <= 1024, "an integer from 1 to 1024", c.threads);
     c.runs.friction = r->number("friction", c.runs.friction);
@@ -173,11 +175,10 @@ CalibrationConfig read_calibration_config(const fs::path& file, std::string_view
       s.require_key("h_mm", "uncut chip thickness of a row of the measurement file, mm");
       s.require_key("vc_m_per_min", "cutting speed of a row of the measurement file, m/min");
       const double h = s.number("h_mm", 0.0), vc = s.number("vc_m_per_min", 0.0);
-      const std::optional<int> cells_per_feed =
-          s.has("cells_per_feed") ? std::optional<int>(static_cast<int>(s.integer("cells_per_feed", 0))) : std::nullopt;
-      if (cells_per_feed)
-        s.check("cells_per_feed", *cells_per_feed >= 2 && *cells_per_feed <= 100,
-                "an integer from 2 to 100 (this condition's cells across t0)", *cells_per_feed);
+      const int cells_per_feed = static_cast<int>(s.integer("cells_per_feed", 0));  // 0: [runs] cells_per_feed
+      if (s.has("cells_per_feed"))
+        s.check("cells_per_feed", cells_per_feed >= 2 && cells_per_feed <= 100,
+                "an integer from 2 to 100 (this condition's cells across t0)", cells_per_feed);
       s.reject_unknown_keys();
       const MeasuredForces* found = nullptr;
       for (const MeasuredForces& r : rows)
@@ -190,7 +191,7 @@ CalibrationConfig read_calibration_config(const fs::path& file, std::string_view
           if (r.line == found->line)
             s.fail("vc_m_per_min", fmt::format("the condition h_mm = {}, vc_m_per_min = {} is selected twice", h, vc));
       into.push_back(*found);
-      if (cells_per_feed) c.cells_per_feed_by_line[found->line] = *cells_per_feed;
+      if (cells_per_feed > 0) c.cells_per_feed_by_line[found->line] = cells_per_feed;
     }
   };
   data.require_key("training", "the training conditions: [{h_mm = 0.1, vc_m_per_min = 100.0}, ...]");

@@ -9,6 +9,8 @@
 
 #include "analysis/chip_analysis.hpp"
 #include "io/input_error.hpp"
+#include "io/material_library.hpp"
+#include "io/toml_reader.hpp"
 
 namespace mpmcut {
 
@@ -105,33 +107,22 @@ int chip_cells_per_feed(int cells_per_feed) {
   return std::max(cells_per_feed, static_cast<int>(std::ceil(ChipThresholds{}.resolved_cells_per_feed)));
 }
 
-double validation_cell_size_m(double t0, double edge_radius, int cells_per_feed, double cells_per_edge_radius) {
-  const double by_feed = t0 / cells_per_feed;
-  return cells_per_edge_radius > 0.0 && edge_radius > 0.0 ? std::min(by_feed, edge_radius / cells_per_edge_radius)
-                                                          : by_feed;
+double thermal_length_m(double kappa, double t0, double speed) { return std::sqrt(kappa * t0 / speed); }
+
+double validation_cell_size_m(double t0, double edge_radius, int cells_per_feed, double cells_per_edge_radius,
+                              double thermal_length, double cells_per_thermal_length) {
+  double cell = t0 / cells_per_feed;
+  if (cells_per_edge_radius > 0.0 && edge_radius > 0.0) cell = std::min(cell, edge_radius / cells_per_edge_radius);
+  if (cells_per_thermal_length > 0.0 && thermal_length > 0.0)
+    cell = std::min(cell, thermal_length / cells_per_thermal_length);
+  return cell;
 }
 
-double validation_cut_length_m(double t0, double edge_radius) { return 6.0 * std::max(t0, edge_radius); }
+namespace {
 
-double validation_workpiece_height_m(double t0, double edge_radius) {
-  return t0 + std::max(3.0 * t0, 2.0 * edge_radius);
-}
-
-std::string condition_case_text(const CuttingCondition& c, const ConditionRunSettings& o) {
-  const double h = c.h_mm * 1e-3;
-  const double r_n = c.edge_radius_um * 1e-6;
-  const int cells_per_feed = c.kind == "chip" ? chip_cells_per_feed(o.cells_per_feed) : o.cells_per_feed;
-  // The edge-radius limit is for the measured edges of the force conditions; the chip-type conditions have
-  // the preset's 5 um edge (no radius in their source), which at r_n/M would be a 1 um cell at 75 m/s.
-  const double cells_per_edge_radius = c.kind == "forces" ? o.cells_per_edge_radius : 0.0;
-  const double cell = o.quick ? 0.25 * h : validation_cell_size_m(h, r_n, cells_per_feed, cells_per_edge_radius);
-  // quick: four cells of tool travel (pipeline check, numbers not meaningful).
-  const double cut = o.quick ? 4.0 * cell : validation_cut_length_m(h, r_n);
-  const double height = validation_workpiece_height_m(h, r_n);
-  std::string s;
-  s += fmt::format("title = \"{} {}: V = {:g} m/s ({:g} m/min), h = {:g} mm\"\n", o.purpose, c.id, c.speed_m_per_s,
-                   c.speed_m_per_s * 60.0, c.h_mm);
-  std::string material = o.material;
+// The [[material]] tables a case of these settings holds before [cutting], and the name [cutting] uses.
+std::pair<std::string, std::string> case_materials_text(const ConditionRunSettings& o) {
+  std::string s, material = o.material;
   if (!o.material_definitions.empty()) {
     s += "\n# the material file given to the study (its [[material]] sets, as read):\n";
     s += o.material_definitions;
@@ -148,6 +139,49 @@ std::string condition_case_text(const CuttingCondition& c, const ConditionRunSet
     for (const auto& [key, value] : o.material_overrides) s += fmt::format("{} = {}\n", key, value);  // {} is the shortest text that reads back exactly
     s += "\n";
   }
+  return {s, material};
+}
+
+}  // namespace
+
+double workpiece_thermal_diffusivity_m2_per_s(const ConditionRunSettings& o) {
+  const auto [text, name] = case_materials_text(o);
+  const toml::table root = parse_toml(text, "the study's material sets");
+  TableReader top(root, "", std::make_shared<InputSource>(InputSource{"the study's material sets", {}}));
+  MaterialLibrary library = builtin_material_library();
+  read_case_materials(top, library);
+  const MaterialParameters* m = library.find(name);
+  if (m == nullptr) throw InputError(fmt::format("material \"{}\": no such set in the library or the study's file", name));
+  return m->thermal_conductivity / (m->density * m->specific_heat);
+}
+
+double validation_cut_length_m(double t0, double edge_radius) { return 6.0 * std::max(t0, edge_radius); }
+
+double validation_workpiece_height_m(double t0, double edge_radius) {
+  return t0 + std::max(3.0 * t0, 2.0 * edge_radius);
+}
+
+std::string condition_case_text(const CuttingCondition& c, const ConditionRunSettings& o) {
+  const double h = c.h_mm * 1e-3;
+  const double r_n = c.edge_radius_um * 1e-6;
+  const int cells_per_feed = c.kind == "chip" ? chip_cells_per_feed(o.cells_per_feed) : o.cells_per_feed;
+  // The edge-radius limit is for the measured edges of the force conditions; the chip-type conditions have
+  // the preset's 5 um edge (no radius in their source), which at r_n/M would be a 1 um cell at 75 m/s.
+  const double cells_per_edge_radius = c.kind == "forces" ? o.cells_per_edge_radius : 0.0;
+  const double l_th = o.cells_per_thermal_length > 0.0
+                          ? thermal_length_m(workpiece_thermal_diffusivity_m2_per_s(o), h, c.speed_m_per_s)
+                          : 0.0;
+  const double cell = o.quick ? 0.25 * h
+                              : validation_cell_size_m(h, r_n, cells_per_feed, cells_per_edge_radius, l_th,
+                                                       o.cells_per_thermal_length);
+  // quick: four cells of tool travel (pipeline check, numbers not meaningful).
+  const double cut = o.quick ? 4.0 * cell : validation_cut_length_m(h, r_n);
+  const double height = validation_workpiece_height_m(h, r_n);
+  std::string s;
+  s += fmt::format("title = \"{} {}: V = {:g} m/s ({:g} m/min), h = {:g} mm\"\n", o.purpose, c.id, c.speed_m_per_s,
+                   c.speed_m_per_s * 60.0, c.h_mm);
+  const auto [materials, material] = case_materials_text(o);
+  s += materials;
   s += "[cutting]\n";
   s += fmt::format("material = \"{}\"  # {}\n", material, o.material_note);
   s += fmt::format("cutting_speed = {}\n", c.speed_m_per_s);
@@ -168,9 +202,15 @@ std::string condition_case_text(const CuttingCondition& c, const ConditionRunSet
     s += fmt::format("tool_temperature = {}  # K, chosen with --tool-temperature\n", *o.tool_temperature);
   s += fmt::format("cell_size = {}  # {}\n", cell,
                    o.quick ? "quick: t0/4 (pipeline check, not converged)"
-                           : fmt::format("min(t0/N, r_n/M), N = {} cells across t0, M = {:g} across r_n: {:.3g} and {:.3g} "
-                                         "cells",
-                                         cells_per_feed, cells_per_edge_radius, h / cell, r_n / cell));
+                   : o.cells_per_thermal_length > 0.0
+                       ? fmt::format("min(t0/N, r_n/M, l_th/K), N = {} cells across t0, M = {:g} across r_n, K = {:g} "
+                                     "across the thermal length l_th = sqrt(kappa t0/V) = {:.3g} um: {:.3g}, {:.3g} and "
+                                     "{:.3g} cells",
+                                     cells_per_feed, cells_per_edge_radius, o.cells_per_thermal_length, l_th * 1e6,
+                                     h / cell, r_n / cell, l_th / cell)
+                       : fmt::format("min(t0/N, r_n/M), N = {} cells across t0, M = {:g} across r_n: {:.3g} and {:.3g} "
+                                     "cells",
+                                     cells_per_feed, cells_per_edge_radius, h / cell, r_n / cell));
   s += fmt::format("cut_length = {}  # {}\n", cut, o.quick ? "quick: 4 cells" : "6 max(t0, r_n)");
   s += fmt::format("workpiece_height = {}  # t0 + max(3 t0, 2 r_n)\n", height);
   s += "mass_scaling = \"auto\"     # workpiece inertia up to an inertia number of 0.002 (docs/mass_scaling.md)\n";

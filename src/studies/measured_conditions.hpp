@@ -67,6 +67,11 @@ struct ConditionRunSettings {
   // M: cell <= r_n / M, so that the rounded edge, which at thin feeds does most of the cutting, is
   // resolved; 0 = no edge-radius limit (cell = t0 / N). Force conditions only (their r_n is measured).
   double cells_per_edge_radius = 4.0;
+  // K: cell <= l_th / K, l_th = sqrt(kappa t0 / V) the thermal length (thermal_length_m); 0 = no such limit. A fast
+  // cut's adiabatic shear bands are about l_th wide and set its forces only where the cells resolve them
+  // (docs/results/low_speed_chip: at 381.3 m/min, l_th = 6.8 um, Fc moved 8 % from t0/16 to t0/24 and 3.6 % from
+  // t0/24 to t0/32, i.e. from 1.1 to 1.6 to 2.2 cells across l_th). Force and chip-type conditions alike.
+  double cells_per_thermal_length = 0.0;
   std::string material = "ti64-cutting";  // a library set
   std::string material_note = "the calibrated set of the default case (materials/ti6al4v.toml)";
   // [[material]] tables (TOML text, e.g. of a user's material file) written into every case before [cutting], so
@@ -92,9 +97,20 @@ struct ConditionRunSettings {
 // segments are particle roughness: at t0/5 the 5 and 75 m/s chip types came out swapped).
 int chip_cells_per_feed(int cells_per_feed);
 
-// The resolution rule of the measured conditions: cell = min(t0 / N, r_n / M), m (M = 0: t0 / N).
+// The thermal length of a cut, m: sqrt(kappa t0 / V), how far heat diffuses (kappa = k / (rho c), m^2/s) in the time
+// t0 / V the material takes to cross the primary shear zone: the width scale of an adiabatic shear band. 37 um at
+// 12.6 m/min and 6.8 um at 381.3 m/min for Ti-6Al-4V at t0 = 0.1 mm.
+double thermal_length_m(double thermal_diffusivity_m2_per_s, double uncut_chip_thickness_m, double speed_m_per_s);
+
+// The resolution rule of the measured conditions: cell = min(t0 / N, r_n / M, l_th / K), m (M = 0 or K = 0: that
+// limit off).
 double validation_cell_size_m(double uncut_chip_thickness_m, double edge_radius_m, int cells_per_feed,
-                              double cells_per_edge_radius);
+                              double cells_per_edge_radius, double thermal_length_m = 0.0,
+                              double cells_per_thermal_length = 0.0);
+
+// The thermal diffusivity k / (rho c), m^2/s, of the workpiece material the settings name (a library set, a set of
+// their material definitions, with their material overrides).
+double workpiece_thermal_diffusivity_m2_per_s(const ConditionRunSettings& settings);
 
 // Tool travel of a measured condition, m: 6 max(t0, r_n). The preset's steady window starts after
 // max(40 % of the cut, 3 t0), so this leaves a window of at least 3 t0 (and 3.6 r_n where the edge is

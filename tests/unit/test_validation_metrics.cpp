@@ -45,6 +45,38 @@ TEST(ValidationResolution, CaseFileCellSizeFollowsTheRule) {
   EXPECT_NEAR(cell_of("chip", 0.1, 5.0), 10e-6, 1e-12);
 }
 
+// l_th = sqrt(kappa t0 / V) with kappa = k / (rho c) of the workpiece set; cell <= l_th / K where that is the smallest.
+// By hand for ti64-sima-ozel-2010 (k 6.8 W/(m K), rho 4430 kg/m^3, c 526.3 J/(kg K): kappa = 2.9166e-6 m^2/s) at
+// h = 0.1 mm: 381.3 m/min l_th = 6.774 um, 12.6 m/min 37.27 um.
+TEST(ValidationResolution, ThermalLengthLimitsTheCellOfFastCuts) {
+  ConditionRunSettings s;
+  s.material = "ti64-sima-ozel-2010";
+  const double kappa = 6.8 / (4430.0 * 526.3);
+  EXPECT_NEAR(workpiece_thermal_diffusivity_m2_per_s(s), kappa, 1e-12 * kappa);
+  EXPECT_NEAR(thermal_length_m(kappa, 0.1e-3, 381.3 / 60.0), 6.774e-6, 0.001e-6);
+  EXPECT_NEAR(thermal_length_m(kappa, 0.1e-3, 12.6 / 60.0), 37.27e-6, 0.01e-6);
+  // K = 1.6 at 381.3 m/min: 4.234 um (finer than t0/10 = 10 um and r_n/4 = 8.25 um); at 12.6 m/min l_th/K = 23 um
+  // does not limit (r_n/4 = 7.875 um does).
+  EXPECT_NEAR(validation_cell_size_m(0.1e-3, 33e-6, 10, 4.0, 6.774e-6, 1.6), 6.774e-6 / 1.6, 1e-15);
+  EXPECT_NEAR(validation_cell_size_m(0.1e-3, 31.5e-6, 10, 4.0, 37.27e-6, 1.6), 7.875e-6, 1e-15);
+  EXPECT_NEAR(validation_cell_size_m(0.1e-3, 33e-6, 10, 4.0, 6.774e-6, 0.0), 8.25e-6, 1e-15);  // K = 0: off
+
+  // The case file: the same cell, and a set whose conductivity is four times larger has l_th twice as long.
+  s.cells_per_thermal_length = 1.6;
+  const CuttingCondition fast{"fast", "forces", 381.3 / 60.0, 0.1, 33.0};
+  EXPECT_NEAR(parse_case(condition_case_text(fast, s), "test.toml").cutting->cell_size, 6.774e-6 / 1.6, 0.001e-6);
+  s.material_overrides = {{"thermal_conductivity", 4 * 6.8}};
+  EXPECT_NEAR(workpiece_thermal_diffusivity_m2_per_s(s), 4 * kappa, 1e-12 * kappa);
+  EXPECT_NEAR(parse_case(condition_case_text(fast, s), "test.toml").cutting->cell_size, 8.25e-6, 1e-12);  // r_n/4
+  // A material file's own set.
+  s.material_overrides.clear();
+  s.material_definitions = "[[material]]\nname = \"slow-heat\"\nlibrary = \"ti64-sima-ozel-2010\"\nthermal_conductivity = 0.68\n";
+  s.material = "slow-heat";
+  EXPECT_NEAR(workpiece_thermal_diffusivity_m2_per_s(s), 0.1 * kappa, 1e-12 * kappa);
+  EXPECT_NEAR(parse_case(condition_case_text(fast, s), "test.toml").cutting->cell_size,
+              std::sqrt(0.1) * 6.774e-6 / 1.6, 0.001e-6);
+}
+
 // --contact-detection reaches the run's scene; without it the case text has no [solver] table, so the cases (and
 // the committed run records made from them) are what they were before the option existed.
 TEST(ValidationCases, ContactDetectionReachesTheScene) {
