@@ -183,7 +183,10 @@ std::vector<ConditionResult> Calibrator::run_conditions(const std::vector<Measur
     write_file_atomically(case_file, [&](std::ostream& s) { s << condition_case_text(cc, settings); });
     ChildRun r;
     r.name = dir.filename().string() + "/" + cc.id;
-    r.args = {"run", case_file.string(), "--out", (dir / cc.id).string(), "--force", "--no-progress", "--no-plots",
+    // --keep-complete: an evaluation cut short (a stop, the end of a working session) resumes its runs from their
+    // checkpoints when the calibration is started again, instead of running them from the start; the optimizer's
+    // replay brings the same point to the same folder, and a changed scene is never resumed (the scene hash).
+    r.args = {"run", case_file.string(), "--out", (dir / cc.id).string(), "--keep-complete", "--no-progress", "--no-plots",
               "--threads", std::to_string(c_.threads)};
     r.log_file = dir / "logs" / (cc.id + ".log");
     runs.push_back(r);

@@ -9,7 +9,8 @@ condition, a budget of 3 evaluations: 2 of CRS2, then BOBYQA from the best point
   - best_material.toml is a [[material]] with library, the free material key, and its provenance;
   - calibration.md has the training and the held-back errors; convergence.png and parity.png exist;
   - resume after a kill -9 (cache.jsonl cut to its first evaluation plus half a line): one evaluation
-    runs again, the other replays, and evaluations.csv comes out identical (deterministic for a seed);
+    is evaluated again, its complete runs kept (not rerun), the other replays, and evaluations.csv comes out
+    identical (deterministic for a seed);
   - a second start over a complete directory runs nothing (neither evaluations nor held-back runs).
 """
 import csv
@@ -100,6 +101,12 @@ def main(binary, scratch):
         fail("the resumed calibration did not run exactly the lost evaluation")
     if read(os.path.join(out, "evaluations.csv")) != table:
         fail("evaluations.csv differs after the resume: not deterministic")
+    # The lost evaluation's runs were complete in its folder: kept, not run again (calibrate runs them with
+    # --keep-complete, so an evaluation cut short resumes from its checkpoints).
+    logs = os.path.join(out, "evaluations", "e0002", "logs")
+    for name in sorted(os.listdir(logs)):
+        if not name.endswith(".analyze.log") and "already holds the complete run" not in read(os.path.join(logs, name)):
+            fail(f"the resumed evaluation ran {name[:-4]} again instead of keeping its complete run")
     log = calibrate(binary, out, "--no-plots")
     if "(0 run now, 3 from the cache)" not in log or "held-back conditions at the best set" in log:
         fail("a complete calibration ran evaluations or the held-back runs again")
