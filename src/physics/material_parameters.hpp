@@ -31,6 +31,10 @@ struct MaterialParameters : ElasticParameters,
 
   // Elastic P-wave speed sqrt((K + 4G/3)/rho), m/s
   double p_wave_speed() const;
+  // Thermal diffusivity k / (rho c), m^2/s (0 for a material without heat capacity)
+  double thermal_diffusivity() const {
+    return density > 0.0 && specific_heat > 0.0 ? thermal_conductivity / (density * specific_heat) : 0.0;
+  }
 
   bool operator==(const MaterialParameters&) const = default;  // field-wise, for round-trip tests
 };

@@ -90,7 +90,9 @@ void CaseRun::begin() {
   progress_.emplace(sim_.scene().solver.end_time, std::cerr,
                     options_.progress ? std::nullopt : std::optional<bool>(false));
   std::cerr << console_line(mass_scaling_report(sim_, cutting_));
-  if (cutting_) std::cerr << console_lines(cutting_resolution(*cutting_));
+  if (cutting_)
+    std::cerr << console_lines(
+        cutting_resolution(*cutting_, workpiece_thermal_diffusivity_m2_per_s(*cutting_, sim_.scene())));
 }
 
 bool CaseRun::advance() {

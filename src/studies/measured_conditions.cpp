@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "analysis/chip_analysis.hpp"
+#include "cutting/cutting_resolution.hpp"
 #include "io/input_error.hpp"
 #include "io/material_library.hpp"
 #include "io/toml_reader.hpp"
@@ -107,8 +108,6 @@ int chip_cells_per_feed(int cells_per_feed) {
   return std::max(cells_per_feed, static_cast<int>(std::ceil(ChipThresholds{}.resolved_cells_per_feed)));
 }
 
-double thermal_length_m(double kappa, double t0, double speed) { return std::sqrt(kappa * t0 / speed); }
-
 double validation_cell_size_m(double t0, double edge_radius, int cells_per_feed, double cells_per_edge_radius,
                               double thermal_length, double cells_per_thermal_length) {
   double cell = t0 / cells_per_feed;
@@ -152,7 +151,7 @@ double workpiece_thermal_diffusivity_m2_per_s(const ConditionRunSettings& o) {
   read_case_materials(top, library);
   const MaterialParameters* m = library.find(name);
   if (m == nullptr) throw InputError(fmt::format("material \"{}\": no such set in the library or the study's file", name));
-  return m->thermal_conductivity / (m->density * m->specific_heat);
+  return m->thermal_diffusivity();
 }
 
 double validation_cut_length_m(double t0, double edge_radius) { return 6.0 * std::max(t0, edge_radius); }

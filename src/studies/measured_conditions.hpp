@@ -97,13 +97,8 @@ struct ConditionRunSettings {
 // segments are particle roughness: at t0/5 the 5 and 75 m/s chip types came out swapped).
 int chip_cells_per_feed(int cells_per_feed);
 
-// The thermal length of a cut, m: sqrt(kappa t0 / V), how far heat diffuses (kappa = k / (rho c), m^2/s) in the time
-// t0 / V the material takes to cross the primary shear zone: the width scale of an adiabatic shear band. 37 um at
-// 12.6 m/min and 6.8 um at 381.3 m/min for Ti-6Al-4V at t0 = 0.1 mm.
-double thermal_length_m(double thermal_diffusivity_m2_per_s, double uncut_chip_thickness_m, double speed_m_per_s);
-
 // The resolution rule of the measured conditions: cell = min(t0 / N, r_n / M, l_th / K), m (M = 0 or K = 0: that
-// limit off).
+// limit off; l_th the thermal length, cutting/cutting_resolution.hpp).
 double validation_cell_size_m(double uncut_chip_thickness_m, double edge_radius_m, int cells_per_feed,
                               double cells_per_edge_radius, double thermal_length_m = 0.0,
                               double cells_per_thermal_length = 0.0);

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "cutting/cutting_resolution.hpp"
 #include "run/case_loading.hpp"
 #include "studies/measured_conditions.hpp"
 #include "studies/validation_metrics.hpp"
