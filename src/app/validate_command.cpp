@@ -16,6 +16,7 @@
 
 #include "analysis/chip_analysis.hpp"
 #include "cutting/cutting_forces.hpp"
+#include "cutting/cutting_resolution.hpp"
 #include "app/plot_command.hpp"
 #include "run/run_case.hpp"
 #include "app/sweep_command.hpp"
@@ -89,6 +90,13 @@ struct Condition : CuttingCondition {
   }
   // A complete force condition with both forces: the ones the errors and goals are computed over.
   bool compared() const { return kind == "forces" && complete() && fc() && ft(); }
+  // Cells of the run across the thermal length sqrt(kappa t0 / V) (cutting/cutting_resolution.hpp), the width scale
+  // of its shear bands; none without a cell size.
+  std::optional<double> cells_per_thermal_length(double kappa) const {
+    const double l_th = thermal_length_m(kappa, h_mm * 1e-3, speed_m_per_s);
+    return result.cell_size_um && l_th > 0.0 ? std::optional<double>(l_th / (*result.cell_size_um * 1e-6))
+                                             : std::nullopt;
+  }
 };
 
 struct ValidateOptions {
@@ -530,6 +538,13 @@ int run_validation(const ValidateOptions& o) {
     failed += c.selected && !c.complete();
   }
 
+  // The workpiece's thermal diffusivity, for the cells across each run's thermal length.
+  const double kappa = workpiece_thermal_diffusivity_m2_per_s(settings);
+  std::vector<std::string> unresolved_bands;  // force conditions with fewer than kResolvedCellsPerThermalLength
+  for (const Condition& c : conditions)
+    if (const auto n = c.cells_per_thermal_length(kappa); c.compared() && n && *n < kResolvedCellsPerThermalLength)
+      unresolved_bands.push_back(fmt::format("h = {:g} mm at {:g} m/min ({:.3g})", c.h_mm, c.speed_m_per_min(), *n));
+
   // Per-run results, for the plots and for anyone who wants the numbers.
   TextTable runs_table;
   runs_table.columns = {"condition", "kind", "speed_m_per_s", "speed_m_per_min", "h_mm", "edge_radius_um",
@@ -538,7 +553,7 @@ int run_validation(const ValidateOptions& o) {
                         "rake_normal_force_N_per_mm", "rake_friction_force_N_per_mm", "edge_flank_cutting_force_N_per_mm",
                         "edge_flank_thrust_force_N_per_mm", "rake_friction_work_per_travel_N_per_mm",
                         "edge_flank_friction_work_per_travel_N_per_mm", "rake_mean_slip_speed_m_per_s", "chip_thickness_ratio", "chip_thickness_um",
-                        "chip_thickness_by_area_um", "cell_size_um", "mass_scaling_factor",
+                        "chip_thickness_by_area_um", "cell_size_um", "cells_per_thermal_length", "mass_scaling_factor",
                         "max_temperature_K", "chip_classification", "segmentation_degree", "segmentation_degree_mean",
                         "segmentation_degree_min", "segmentation_degree_max", "wall_time_s", "source_revision", "result_dir", "message"};
   for (const Condition& c : conditions) {
@@ -558,7 +573,8 @@ int run_validation(const ValidateOptions& o) {
                                format_number(c.result.tool_force_split.rake_slip_speed_m_per_s),
                                format_number(c.result.chip_thickness_ratio), format_number(c.chip_thickness_um()),
                                format_number(c.chip_thickness_by_area_um()),
-                               format_number(c.result.cell_size_um), format_number(c.result.mass_scaling_factor),
+                               format_number(c.result.cell_size_um), format_number(c.cells_per_thermal_length(kappa), 3),
+                               format_number(c.result.mass_scaling_factor),
                                format_number(c.result.max_temperature_K), c.result.chip_classification,
                                format_number(c.result.segmentation_degree, 3),
                                format_number(c.result.segmentation_degree_mean, 3),
@@ -780,6 +796,14 @@ int run_validation(const ValidateOptions& o) {
                      std::count_if(conditions.begin(), conditions.end(), [](const Condition& c) { return c.origin == "record"; }),
                      o.records_dir.empty() ? "" : " in " + o.records_dir, not_run.size(), not_run.empty() ? "" : " (listed at the end)", compared.size());
     s << "Resolution: " << resolution_text(o) << ".\n\n";
+    if (!unresolved_bands.empty())
+      s << fmt::format("**Shear bands not resolved at {} of {} compared conditions**: fewer than {:g} cells across "
+                       "the thermal length √(κ t0/V), the width scale of a fast cut's adiabatic shear bands; there the "
+                       "forces still move with the cell (at h = 0.1 mm, 381.3 m/min: Fc −8 % from 1.1 to 1.6 cells; "
+                       "docs/results.md \"Resolution rule\", `--cells-per-thermal-length`): {} (cells across l_th in "
+                       "brackets; validation_runs.csv `cells_per_thermal_length`).\n\n",
+                       unresolved_bands.size(), compared.size(), kResolvedCellsPerThermalLength,
+                       join(unresolved_bands, ", "));
     s << revisions_text(conditions) << "\n\n";
     s << "## Goals\n\n" << goals.markdown() << "\n";
     s << "Under the stated assumption b = 1 mm; no parameter was tuned per condition (one material set, one friction "
