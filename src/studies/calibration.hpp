@@ -64,12 +64,12 @@ CalibrationConfig read_calibration_config(const std::filesystem::path& file, std
 // The path of the built-in measurements, as a config names it.
 constexpr const char* kBuiltinForcesFile = "data/experiments/ti64_klippel2024_orthogonal_forces.csv";
 
-// Runs (or resumes) the calibration into `out`: evaluations.csv, best_material.toml, calibration.md,
-// calibration_best.csv, cache.jsonl, evaluations/. Returns 0, 1 (the best set's held-back runs failed),
-// or 130 (interrupted: run the same command again to resume).
 // The run settings of one condition: `runs` with the condition's own cells_per_feed where it has one.
 ConditionRunSettings condition_run_settings(const CalibrationConfig& config, const MeasuredForces& condition);
 
+// Runs (or resumes) the calibration into `out`: evaluations.csv, best_material.toml, calibration.md,
+// calibration_best.csv, cache.jsonl, evaluations/. Returns 0, 1 (the best set's held-back runs failed),
+// or 130 (interrupted: run the same command again to resume).
 int run_calibration(const CalibrationConfig& config, const std::filesystem::path& out, int jobs);
 
 }  // namespace mpmcut
