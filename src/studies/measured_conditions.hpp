@@ -67,10 +67,8 @@ struct ConditionRunSettings {
   // M: cell <= r_n / M, so that the rounded edge, which at thin feeds does most of the cutting, is
   // resolved; 0 = no edge-radius limit (cell = t0 / N). Force conditions only (their r_n is measured).
   double cells_per_edge_radius = 4.0;
-  // K: cell <= l_th / K, l_th = sqrt(kappa t0 / V) the thermal length (thermal_length_m); 0 = no such limit. A fast
-  // cut's adiabatic shear bands are about l_th wide and set its forces only where the cells resolve them
-  // (docs/results/low_speed_chip: at 381.3 m/min, l_th = 6.8 um, Fc moved 8 % from t0/16 to t0/24 and 3.6 % from
-  // t0/24 to t0/32, i.e. from 1.1 to 1.6 to 2.2 cells across l_th). Force and chip-type conditions alike.
+  // K: cell <= l_th / K, l_th = sqrt(kappa t0 / V) the thermal length, the width scale of a fast cut's shear bands
+  // (cutting/cutting_resolution.hpp has the evidence); 0 = no such limit. Force and chip-type conditions alike.
   double cells_per_thermal_length = 0.0;
   std::string material = "ti64-cutting";  // a library set
   std::string material_note = "the calibrated set of the default case (materials/ti6al4v.toml)";
