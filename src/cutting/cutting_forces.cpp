@@ -247,7 +247,9 @@ void CuttingForcesObserver::at_finish(const Simulation& sim, nlohmann::json& sum
                                 {"start_tool_travel_m", steady_start_time_ * c_.cutting_speed},
                                 {"end_tool_travel_m", -tool.displacement.x()},
                                 {"definition", "mean of the contact force over the tool travel after the chip has "
-                                               "formed: from max(steady_start_fraction * cut_length, 3 t0) to the end"}};
+                                               "formed: from max(steady_start_fraction * cut_length, min(3 t0, 0.6 "
+                                               "cut_length)) to the end"}};
+    if (const std::string w = steady_window_warning(c_); !w.empty()) summary["steady_window"]["warning"] = w;
     if (steady_mid_impulse_ && sim.time() > steady_mid_time_) {
       // Second half's mean minus the first half's, relative to the window's mean: a force that still
       // drifts (a transient longer than the cut) shows here, not in the mean.

@@ -11,10 +11,31 @@
 
 namespace mpmcut {
 
-// The chip needs about three uncut chip thicknesses of travel to form; short cuts still get
-// the last 40% of their travel as the window.
+namespace {
+// Short cuts still get the last 40 % of their travel as the force window.
+constexpr double kShortCutWindowStart = 0.6;
+}  // namespace
+
+// The chip needs about three uncut chip thicknesses of travel to form.
 double steady_window_start_travel(const CuttingParameters& c) {
-  return std::max(c.steady_start_fraction * c.cut_length, std::min(kEntryTravelT0 * c.uncut_chip_thickness, 0.6 * c.cut_length));
+  return std::max(c.steady_start_fraction * c.cut_length,
+                  std::min(kEntryTravelT0 * c.uncut_chip_thickness, kShortCutWindowStart * c.cut_length));
+}
+
+std::string steady_window_warning(const CuttingParameters& c) {
+  const double formed = kEntryTravelT0 * c.uncut_chip_thickness;
+  const double start = steady_window_start_travel(c);
+  // Half the window after the chip has formed: L - formed >= (L - start) / 2.
+  if (c.cut_length - formed >= 0.5 * (c.cut_length - start)) return "";
+  // The warning arises only where the window starts at a fixed share q of the cut (q L < formed), so
+  // L - formed >= (1 - q) L / 2 gives the shortest steady cut.
+  const double q = std::max(c.steady_start_fraction, kShortCutWindowStart);
+  const double needed = formed / (0.5 + 0.5 * q);
+  return fmt::format(
+      "cutting.cut_length = {:.3g} m is too short: less than half of the force window ({:.3g} to {:.3g} m of travel) "
+      "lies beyond the {:g} t0 = {:.3g} m the chip needs to form, so the mean forces and the chip are mostly those of "
+      "the entry transient; a steady mean needs cut_length >= {:.3g} m",
+      c.cut_length, start, c.cut_length, kEntryTravelT0, formed, needed);
 }
 
 double cutting_cell_size(const CuttingParameters& c) {

@@ -2,6 +2,8 @@
 // The cutting preset: process parameters -> a general Scene (workpiece, tool, grid, boundary
 // conditions, outputs). The result is written next to the results as scene.toml, so a user
 // can see and edit exactly what ran. The process itself travels beside the scene (cutting/case.hpp).
+#include <string>
+
 #include "solver/scene.hpp"
 #include "cutting/cutting_parameters.hpp"
 
@@ -21,5 +23,8 @@ double machined_surface_on_node_row(double workpiece_height, double uncut_chip_t
 
 // The tool travel after which the chip is taken as formed (start of the steady window), m.
 double steady_window_start_travel(const CuttingParameters& c);
+// A warning when the cut is too short for its force window to start after the chip has formed (cut_length below
+// kEntryTravelT0 t0 / 0.6): the means are then those of the entry transient. Empty otherwise.
+std::string steady_window_warning(const CuttingParameters& c);
 
 }  // namespace mpmcut

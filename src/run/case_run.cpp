@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cutting/cutting_resolution.hpp"
+#include "cutting/cutting_scene.hpp"
 #include "run/case_loading.hpp"
 #include "run/mass_scaling_report.hpp"
 
@@ -90,9 +91,11 @@ void CaseRun::begin() {
   progress_.emplace(sim_.scene().solver.end_time, std::cerr,
                     options_.progress ? std::nullopt : std::optional<bool>(false));
   std::cerr << console_line(mass_scaling_report(sim_, cutting_));
-  if (cutting_)
+  if (cutting_) {
     std::cerr << console_lines(
         cutting_resolution(*cutting_, workpiece_thermal_diffusivity_m2_per_s(*cutting_, sim_.scene())));
+    if (const std::string w = steady_window_warning(*cutting_); !w.empty()) std::cerr << "warning: " << w << "\n";
+  }
 }
 
 bool CaseRun::advance() {

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "cutting/cutting_scene.hpp"
 #include "physics/material_parameters.hpp"
@@ -65,6 +66,26 @@ TEST(CuttingScene, ToolCarriesFrictionAndHeatTransfer) {
   EXPECT_EQ(s.rigid_bodies[0].temperature, 500.0);
   c.friction_heat_share = CuttingParameters{}.friction_heat_share;  // the default: all of it
   EXPECT_EQ(build_cutting_scene(c, m).rigid_bodies[0].friction_heat_share, 1.0);
+}
+
+// The force window of a short cut is its last 40 %; a cut whose window lies mostly within the 3 t0 of travel that the
+// chip takes to form is flagged, with the shortest cut that is not: 3 t0 / (0.5 + 0.5 * 0.6) = 3.75 t0.
+TEST(CuttingScene, ShortCutWhoseForceWindowPrecedesTheFormedChipIsFlagged) {
+  CuttingParameters c;
+  c.uncut_chip_thickness = 0.1e-3;
+  c.cut_length = 0.08e-3;  // window 0.048-0.08 mm, all before 0.3 mm
+  const std::string w = steady_window_warning(c);
+  EXPECT_NE(w.find("too short"), std::string::npos) << w;
+  EXPECT_NE(w.find("0.000375 m"), std::string::npos) << w;
+  c.cut_length = 0.37e-3;  // window 0.222-0.37 mm: 0.07 of its 0.148 mm after 0.3 mm
+  EXPECT_FALSE(steady_window_warning(c).empty());
+  c.cut_length = 0.38e-3;  // window 0.228-0.38 mm: 0.08 of 0.152 mm after
+  EXPECT_TRUE(steady_window_warning(c).empty());
+  c.cut_length = 0.4e-3;  // the default cut
+  EXPECT_TRUE(steady_window_warning(c).empty());
+  c.cut_length = 1e-3;  // the window starts at 0.4 mm, after the chip has formed
+  EXPECT_TRUE(steady_window_warning(c).empty());
+  EXPECT_DOUBLE_EQ(steady_window_start_travel(c), 0.4e-3);
 }
 
 }  // namespace
