@@ -45,7 +45,7 @@ def read_json(path):
 
 
 def read_csv_rows(path):
-    with open(path, newline="") as f:
+    with open(path, newline="", encoding="utf-8") as f:
         return list(csv.DictReader(f))
 
 

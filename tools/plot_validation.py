@@ -2,17 +2,19 @@
 
 usage: /usr/bin/python3 plot_validation.py VALIDATION_DIR [--quick]
 
-Reads VALIDATION_DIR/validation_runs.csv (the simulated runs) and the measured forces in
-data/experiments/ti64_klippel2024_orthogonal_forces.csv (found next to this script's folder: ../data/experiments).
-Writes into VALIDATION_DIR:
-  validation_forces.png  Fc and Ft vs cutting speed at h = 0.1 mm: every measured condition mean with its min-max
+Reads VALIDATION_DIR/validation_runs.csv (the simulated runs) and VALIDATION_DIR/validation_measured.csv (the
+measurements as `mpmcut validate` read them: the built-in Klippel et al. 2024 data or a --measurements file; runs
+and measurements are paired by condition id). Writes into VALIDATION_DIR:
+  validation_forces.png  Fc and Ft vs cutting speed at h = 0.1 mm (or, without measurements there, at the h with
+                         the most): every measured condition mean with its min-max
                          range as error bars (tests marked "short" as open symbols), simulated runs as large symbols;
                          the measured forces in N are drawn as N/mm under the ASSUMPTION b = 1 mm (stated on the plot);
   validation_ratio.png   Ft/Fc vs cutting speed at h = 0.1 mm (independent of b), same symbols;
   validation_parity.png  simulated vs measured Fc, Ft, Ft/Fc and chip thickness t_c of every complete force
                          condition: 45-degree line, +-15 % band, measured min-max as horizontal bars;
-  validation_speed.png   Fc and Ft vs cutting speed (log axis) at each h with two or more measured speeds;
-  validation_thickness.png  Fc and Ft vs h at each speed with two or more measured thicknesses.
+  validation_speed.png   Fc and Ft vs cutting speed (log axis) at each h (and tool) with two or more measured speeds;
+  validation_thickness.png  Fc and Ft vs h at each speed (and tool) with two or more measured thicknesses.
+Where the measurements give several tools at one h, the first two figures show the tool with the most conditions.
 In the last two, measured means with min-max bars for every condition of the data file, simulated as markers.
 """
 import os
@@ -22,15 +24,14 @@ import plot_style as ps
 from plot_style import plt
 from matplotlib.ticker import FuncFormatter, NullFormatter
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-DATA = os.path.join(HERE, "..", "data", "experiments", "ti64_klippel2024_orthogonal_forces.csv")
-
-
-def read_measured(path):
-    with open(path) as f:
-        lines = [line for line in f if not line.startswith("#")]
-    import csv
-    return list(csv.DictReader(lines))
+def pick_series(measured):
+    """The (h, tool) of the speed figures: h = 0.1 mm if measured, else the h with the most conditions; the tool
+    with the most conditions there."""
+    f = ps.to_float
+    hs = [f(m["h_mm"]) for m in measured]
+    h = 0.1 if 0.1 in hs else max(sorted(set(hs)), key=hs.count)
+    tools = [m["tool"] for m in measured if f(m["h_mm"]) == h]
+    return h, max(sorted(set(tools)), key=tools.count)
 
 
 def main(argv):
@@ -42,15 +43,19 @@ def main(argv):
     d = argv[0]
     ps.apply_style()
     runs = [r for r in ps.read_csv_rows(os.path.join(d, "validation_runs.csv")) if r["kind"] == "forces"]
-    measured = [m for m in read_measured(DATA) if ps.to_float(m["h_mm"]) == 0.1]
+    all_measured = ps.read_csv_rows(os.path.join(d, "validation_measured.csv"))
+    if not all_measured:
+        print("no measured force condition: nothing to plot", file=sys.stderr)
+        return 0
     f = ps.to_float
-
-    def sim_at(h):
-        pts = [(f(r["speed_m_per_min"]), f(r["cutting_force_N_per_mm"]), f(r["thrust_force_N_per_mm"]), r)
-               for r in runs if f(r["h_mm"]) == h and r["status"] == "complete"]
-        return [p for p in pts if p[1] is not None and p[2] is not None]
-
-    sim = sim_at(0.1)
+    source = all_measured[0]["source"]
+    h_shown, tool_shown = pick_series(all_measured)
+    measured = [m for m in all_measured if f(m["h_mm"]) == h_shown and m["tool"] == tool_shown]
+    ids = {m["condition"] for m in measured}
+    shown = f"h = {h_shown:g} mm" + (f", {tool_shown}" if tool_shown else "")
+    pts = [(f(r["speed_m_per_min"]), f(r["cutting_force_N_per_mm"]), f(r["thrust_force_N_per_mm"]), r)
+           for r in runs if r["condition"] in ids and r["status"] == "complete"]
+    sim = [p for p in pts if p[1] is not None and p[2] is not None]
     fallback = any("last half" in p[3]["force_window"] for p in sim)
 
     # Forces.
@@ -73,10 +78,9 @@ def main(argv):
     ax.set_xlabel("Cutting speed $v_c$ (m/min)")
     ax.set_ylabel("Force per unit width (N/mm)")
     ax.set_ylim(bottom=0)
-    ax.set_title("Ti-6Al-4V, h = 0.1 mm: measured (Klippel et al. 2024) vs simulated")
+    ax.set_title(f"{shown}: measured ({source}) vs simulated", fontsize=9)
     ax.legend(frameon=False, fontsize=7, ncol=2, loc="lower left")
-    notes = ["Measured N converted to N/mm with ASSUMED width of cut b = 1 mm (b is not in the data file); "
-             "bars: min–max of the repeated tests."]
+    notes = ["Measured N as N/mm with ASSUMED width of cut b = 1 mm; bars: min–max of the repeated tests."]
     if fallback:
         notes.append("Simulated means over the last half of the cut (runs ended before their steady window).")
     if quick:
@@ -102,18 +106,17 @@ def main(argv):
     ax.set_xlabel("Cutting speed $v_c$ (m/min)")
     ax.set_ylabel("$F_t / F_c$ (–)")
     ax.set_ylim(0, 1.2)
-    ax.set_title("Thrust-to-cutting force ratio, h = 0.1 mm (independent of the width of cut)")
+    ax.set_title(f"Thrust-to-cutting force ratio, {shown} (independent of the width of cut)", fontsize=9)
     ax.legend(frameon=False, fontsize=7.5, loc="lower left")
-    fig.text(0.01, -0.02, "Bars: extreme combinations of the min–max ranges of Ft and Fc. Tool rake/clearance "
-             "of the experiments not in the data file; simulation: 0°/11° assumed.", fontsize=6.5, color="0.3", va="top")
+    fig.text(0.01, -0.02, "Bars: extreme combinations of the min–max ranges of Ft and Fc. "
+             + ("Tool rake/clearance of the experiments not in the data file; simulation: 0°/11° assumed."
+                if not tool_shown else f"Tool: {tool_shown}."), fontsize=6.5, color="0.3", va="top")
     ps.save(fig, os.path.join(d, "validation_ratio.png"))
 
-    all_runs = [r for r in ps.read_csv_rows(os.path.join(d, "validation_runs.csv")) if r["kind"] == "forces"]
-    all_measured = read_measured(DATA)
     note = "Measured N as N/mm with ASSUMED b = 1 mm." + (" --quick: not converged." if quick else "")
-    parity(d, all_runs, all_measured, note)
-    trend_panels(d, all_runs, all_measured, "vc_m_per_min", "h_mm", note)
-    trend_panels(d, all_runs, all_measured, "h_mm", "vc_m_per_min", note)
+    parity(d, runs, all_measured, note, source)
+    trend_panels(d, runs, all_measured, "vc_m_per_min", "h_mm", note, source)
+    trend_panels(d, runs, all_measured, "h_mm", "vc_m_per_min", note, source)
     return 0
 
 
@@ -122,9 +125,8 @@ def same(a, b):
 
 
 def measured_of(run, measured):
-    f = ps.to_float
     for m in measured:
-        if same(f(m["h_mm"]), f(run["h_mm"])) and same(f(m["vc_m_per_min"]), f(run["speed_m_per_min"])):
+        if m["condition"] == run["condition"]:
             return m
     return None
 
@@ -135,7 +137,7 @@ def complete_runs(runs):
             and f(r["thrust_force_N_per_mm"]) is not None]
 
 
-def parity(d, runs, measured, note):
+def parity(d, runs, measured, note, source):
     """Simulated vs measured Fc, Ft, Ft/Fc, t_c with the 45-degree line and a +-15 % band."""
     f = ps.to_float
     fig, axes = plt.subplots(2, 2, figsize=(7.6, 7.0))
@@ -175,19 +177,19 @@ def parity(d, runs, measured, note):
         ax.set_xlabel(f"measured {label}")
         ax.set_ylabel(f"simulated {label}")
     axes.flat[0].legend(frameon=False, fontsize=6.5, loc="upper left")
-    fig.suptitle("Ti-6Al-4V, Klippel et al. 2024: simulated vs measured, every complete force condition")
+    fig.suptitle(f"{source}: simulated vs measured, every complete force condition", fontsize=10)
     fig.text(0.01, 0.0, note + " t_c: simulated t0 / chip thickness ratio vs measured h_avg.", fontsize=6.5,
              color="0.3", va="top")
     ps.save(fig, os.path.join(d, "validation_parity.png"))
 
 
-def trend_panels(d, runs, measured, x_key, group_key, note):
-    """Fc and Ft vs x_key (speed or h), one panel per value of group_key with two or more measured x."""
+def trend_panels(d, runs, measured, x_key, group_key, note, source):
+    """Fc and Ft vs x_key (speed or h), one panel per value of group_key and tool with two or more measured x."""
     f = ps.to_float
     run_key = {"vc_m_per_min": "speed_m_per_min", "h_mm": "h_mm"}
     groups = {}
     for m in measured:
-        groups.setdefault(f(m[group_key]), []).append(m)
+        groups.setdefault((f(m[group_key]), m["tool"]), []).append(m)
     groups = {g: ms for g, ms in sorted(groups.items()) if len({f(m[x_key]) for m in ms}) >= 2}
     by_speed = x_key == "vc_m_per_min"
     name = "validation_speed.png" if by_speed else "validation_thickness.png"
@@ -196,7 +198,7 @@ def trend_panels(d, runs, measured, x_key, group_key, note):
     rows = (n + cols - 1) // cols
     fig, axes = plt.subplots(rows, cols, figsize=(4.4 * cols, 3.8 * rows), squeeze=False)
     done = complete_runs(runs)
-    for ax, (g, ms) in zip(axes.flat, groups.items()):
+    for ax, ((g, tool), ms) in zip(axes.flat, groups.items()):
         ms = sorted(ms, key=lambda m: f(m[x_key]))
         for key, color, label in (("Fc", ps.COLOR_FC, "$F_c$"), ("Ff", ps.COLOR_FT, "$F_t$")):
             x = [f(m[x_key]) for m in ms]
@@ -206,7 +208,8 @@ def trend_panels(d, runs, measured, x_key, group_key, note):
             ax.errorbar(x, y, yerr=[lo, hi], fmt="o-", ms=3.5, color=color, mfc="white", capsize=2, lw=0.7,
                         label=f"{label} measured")
             col = "cutting_force_N_per_mm" if key == "Fc" else "thrust_force_N_per_mm"
-            sim = sorted((f(r[run_key[x_key]]), f(r[col])) for r in done if same(f(r[run_key[group_key]]), g))
+            ids = {m["condition"] for m in ms}
+            sim = sorted((f(r[run_key[x_key]]), f(r[col])) for r in done if r["condition"] in ids)
             if sim:
                 ax.plot([p[0] for p in sim], [p[1] for p in sim], "D", ms=7, color=color, mec="black", mew=0.7,
                         label=f"{label} simulated", zorder=5)
@@ -217,11 +220,11 @@ def trend_panels(d, runs, measured, x_key, group_key, note):
             ax.xaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
             ax.xaxis.set_minor_formatter(NullFormatter())
             ax.set_xlabel("cutting speed $v_c$ (m/min)")
-            ax.set_title(f"h = {g:g} mm", fontsize=9)
+            ax.set_title(f"h = {g:g} mm" + (f", {tool}" if tool else ""), fontsize=9)
         else:
             ax.set_xlabel("uncut chip thickness h (mm)")
             ax.set_xlim(left=0)
-            ax.set_title(f"$v_c$ = {g:g} m/min", fontsize=9)
+            ax.set_title(f"$v_c$ = {g:g} m/min" + (f", {tool}" if tool else ""), fontsize=9)
         ax.set_ylabel("force (N/mm)")
         ax.set_ylim(bottom=0)
     for ax in list(axes.flat)[len(groups):]:
@@ -233,7 +236,7 @@ def trend_panels(d, runs, measured, x_key, group_key, note):
     if labels:
         axes.flat[0].legend(labels.values(), labels.keys(), frameon=False, fontsize=6.5, loc="best")
     fig.suptitle("Fc and Ft against " + ("speed at each h" if by_speed else "h at each speed")
-                 + " (measured: Klippel et al. 2024, mean and min–max)", fontsize=9)
+                 + f" (measured: {source}, mean and min–max)", fontsize=9)
     fig.tight_layout(rect=(0, 0.01, 1, 0.96))
     fig.text(0.01, 0.0, note, fontsize=6.5, color="0.3", va="top")
     ps.save(fig, os.path.join(d, name))

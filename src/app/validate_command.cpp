@@ -119,7 +119,27 @@ struct ValidateOptions {
   std::optional<double> friction_heat_share;  // none: the preset's (all frictional heat into the workpiece)
   std::optional<double> tool_heat_transfer_coefficient, tool_temperature;  // none: an adiabatic tool
   std::string contact_detection;  // empty: the preset's (node detection)
+  // --measurements: a force file of the user's in the layout of data/experiments (then the matrix is its rows, without
+  // the chip-type conditions); empty: the built-in Klippel et al. file and the chip-type conditions.
+  std::string measurements;
 };
+
+// The force measurements the conditions come from: the user's file or the built-in one.
+struct ForceData {
+  DataFile file;
+  std::string source;  // what the report's source column says
+  bool builtin = true;
+};
+
+ForceData force_data(const ValidateOptions& o) {
+  if (o.measurements.empty())
+    return {read_data_file(embedded_tool_file(kForcesFile), kForcesFile), kForcesSource, true};
+  std::ifstream in(o.measurements, std::ios::binary);
+  if (!in) throw InputError(fmt::format("--measurements {}: cannot read the file", o.measurements));
+  std::stringstream text;
+  text << in.rdbuf();
+  return {read_data_file(text.str(), o.measurements), o.measurements + " (--measurements)", false};
+}
 
 std::string join(const std::vector<std::string>& parts, const std::string& sep) {
   std::string out;
@@ -220,20 +240,22 @@ std::optional<double> melting_temperature(const fs::path& dir) {
 }
 
 // Every condition of data/experiments: all rows of the force file (every status) and the chip-type rows
-// that name a speed to simulate.
-std::vector<Condition> matrix_conditions(const ConditionRunSettings& settings) {
+// that name a speed to simulate; with a user's force file, its rows only.
+std::vector<Condition> matrix_conditions(const ConditionRunSettings& settings, const ForceData& data) {
   std::vector<Condition> conditions;
-  for (const MeasuredForces& m : read_measured_forces(read_data_file(embedded_tool_file(kForcesFile), kForcesFile))) {
+  std::map<std::string, int> line_of_id;
+  for (const MeasuredForces& m : read_measured_forces(data.file)) {
     Condition c;
-    c.id = fmt::format("forces_h{:g}mm_vc{:g}mpmin", m.h_mm, m.vc_m_per_min);
-    c.kind = "forces";
-    c.speed_m_per_s = m.vc_m_per_min / 60.0;
-    c.h_mm = m.h_mm;
-    c.edge_radius_um = m.edge_radius_um;
+    static_cast<CuttingCondition&>(c) = force_condition(m);
     c.measured = m;
+    if (const auto [it, added] = line_of_id.emplace(c.id, m.line); !added)
+      throw InputError(fmt::format("{}:{}: the condition {} is on line {} already (one row per h, speed and tool "
+                                   "angles: rows of repeated tests are averaged into one, as in the data files)",
+                                   data.file.source, m.line, c.id, it->second));
     conditions.push_back(c);
   }
-  for (const DataFile::Row& row : read_data_file(embedded_tool_file(kChipFile), kChipFile).rows) {
+  for (const DataFile::Row& row : data.builtin ? read_data_file(embedded_tool_file(kChipFile), kChipFile).rows
+                                               : std::vector<DataFile::Row>{}) {
     const auto& r = row.cells;
     const double v = num(r, "simulate_speed_m_per_s");
     if (!std::isfinite(v)) continue;
@@ -280,7 +302,7 @@ void select_conditions(std::vector<Condition>& all, const ValidateOptions& o) {
   for (Condition& c : all) {
     if (!filtered) {
       const auto& quick = quick_condition_ids();
-      c.selected = !o.quick || std::find(quick.begin(), quick.end(), c.id) != quick.end();
+      c.selected = !o.quick || !o.measurements.empty() || std::find(quick.begin(), quick.end(), c.id) != quick.end();
       continue;
     }
     c.selected =
@@ -371,10 +393,22 @@ int list_conditions(const std::vector<Condition>& conditions, const fs::path& ou
   return 0;
 }
 
+// The tool's angles of a force condition as the measurements give them ("" where they give none).
+std::string tool_text(const Condition& c) {
+  std::string t = c.rake_deg ? fmt::format("rake {:g}°", *c.rake_deg) : "";
+  if (c.clearance_deg) t += (t.empty() ? "" : ", ") + fmt::format("clearance {:g}°", *c.clearance_deg);
+  return t;
+}
+
+// Conditions cut with the same tool angles (as far as the measurements give them).
+bool same_tool(const Condition& a, const Condition& b) { return a.rake_deg == b.rake_deg && a.clearance_deg == b.clearance_deg; }
+
 std::string condition_label(const Condition& c) {
   const MeasuredForces& m = *c.measured;
-  return fmt::format("h = {:g} mm, vc = {:g} m/min ({:.3g} m/s), r_n = {:g} µm, n = {}{}", m.h_mm, m.vc_m_per_min,
-                     c.speed_m_per_s, m.edge_radius_um, m.n_tests, m.status == "ok" ? "" : ", status " + m.status);
+  const std::string tool = tool_text(c);
+  return fmt::format("h = {:g} mm, vc = {:g} m/min ({:.3g} m/s), r_n = {:g} µm{}, n = {}{}", m.h_mm, m.vc_m_per_min,
+                     c.speed_m_per_s, m.edge_radius_um, tool.empty() ? "" : ", " + tool, m.n_tests,
+                     m.status == "ok" ? "" : ", status " + m.status);
 }
 
 
@@ -391,6 +425,9 @@ TextTable by_condition_table(const std::vector<const Condition*>& compared) {
   TextTable t;
   t.headings = {"h (mm)", "vc (m/min)", "r_n (µm)", "Fc meas. / sim. (N/mm)", "error", "Ft meas. / sim. (N/mm)",
                 "error", "Ft/Fc meas. / sim.", "error", "t_c meas. / sim. (µm)", "error", "steady"};
+  // Measurements with the tool's angles: a column for them.
+  const bool tools = std::any_of(compared.begin(), compared.end(), [](const Condition* c) { return !tool_text(*c).empty(); });
+  if (tools) t.headings.insert(t.headings.begin() + 3, "tool");
   t.columns = t.headings;
   const auto pair = [](double measured, std::optional<double> simulated, const char* format) {
     return fmt::format(fmt::runtime(format), measured) + " / " +
@@ -408,6 +445,7 @@ TextTable by_condition_table(const std::vector<const Condition*>& compared) {
                       pair(m.ff_N, c->ft(), "{:.0f}"), err(m.ff_N, c->ft()), pair(ratio, c->ratio(), "{:.2f}"),
                       err(ratio, c->ratio()), std::isfinite(tc) ? pair(tc, c->chip_thickness_um(), "{:.0f}") : "",
                       std::isfinite(tc) ? err(tc, c->chip_thickness_um()) : "", steady(*c) ? "yes" : "no"});
+    if (tools) t.rows.back().insert(t.rows.back().begin() + 3, tool_text(*c));
   }
   return t;
 }
@@ -444,7 +482,8 @@ int run_validation(const ValidateOptions& o) {
   const fs::path out = o.out_dir.empty() ? fs::path(o.quick ? "results/validation_quick" : "results/validation")
                                          : fs::path(o.out_dir);
   const ConditionRunSettings settings = run_settings(o);
-  std::vector<Condition> conditions = matrix_conditions(settings);
+  const ForceData data = force_data(o);
+  std::vector<Condition> conditions = matrix_conditions(settings, data);
   select_conditions(conditions, o);
   // A changed material key that the material rejects (unknown, out of range) stops the study before any run.
   if (!settings.material_overrides.empty()) {
@@ -585,6 +624,24 @@ int run_validation(const ValidateOptions& o) {
   }
   runs_table.write_csv(out / "validation_runs.csv");
 
+  // The measurements as this report read them (ranges filled in, tool angles as text), one row per force condition:
+  // what the plots draw, so that they need not read the data file again.
+  TextTable measured_table;
+  measured_table.columns = {"condition", "h_mm", "vc_m_per_min", "tool", "edge_radius_um", "Fc_mean_N", "Fc_min_N",
+                            "Fc_max_N", "Ff_mean_N", "Ff_min_N", "Ff_max_N", "chip_thickness_um", "status", "source"};
+  measured_table.headings = measured_table.columns;
+  for (const Condition& c : conditions) {
+    if (c.kind != "forces") continue;
+    const MeasuredForces& m = *c.measured;
+    measured_table.rows.push_back({c.id, fmt::format("{:g}", m.h_mm), fmt::format("{:g}", m.vc_m_per_min), tool_text(c),
+                                   fmt::format("{:g}", m.edge_radius_um), fmt::format("{:g}", m.fc_N),
+                                   fmt::format("{:g}", m.fc_min_N), fmt::format("{:g}", m.fc_max_N),
+                                   fmt::format("{:g}", m.ff_N), fmt::format("{:g}", m.ff_min_N),
+                                   fmt::format("{:g}", m.ff_max_N), format_number(m.chip_thickness_um, 6), m.status,
+                                   data.builtin ? "Klippel et al. 2024" : o.measurements});
+  }
+  measured_table.write_csv(out / "validation_measured.csv");
+
   // The comparison table: one row per compared quantity of every reported force condition.
   TextTable table;
   table.columns = {"condition", "quantity", "unit", "measured_mean", "measured_min", "measured_max", "simulated",
@@ -593,7 +650,9 @@ int run_validation(const ValidateOptions& o) {
                     "error %", "in range", "basis / assumption", "source"};
   const auto reference_of = [&](const Condition& c) -> const Condition* {
     for (const Condition& b : conditions)
-      if (b.kind == "forces" && same_h(b.h_mm, kReferenceH_mm) && same_speed(b.speed_m_per_s, c.speed_m_per_s)) return &b;
+      if (b.kind == "forces" && same_h(b.h_mm, kReferenceH_mm) && same_speed(b.speed_m_per_s, c.speed_m_per_s) &&
+          same_tool(b, c))
+        return &b;
     return nullptr;
   };
   // Errors over the compared conditions (complete force runs), in matrix order.
@@ -618,16 +677,16 @@ int run_validation(const ValidateOptions& o) {
     const double measured_tc = m.chip_thickness_um.value_or(NAN);
     const std::string b_assumed = "N/mm vs N with b = 1 mm ASSUMED (b not in the data file)";
     table.rows.push_back({cond, "Fc", "N/mm", g4(m.fc_N), g4(m.fc_min_N), g4(m.fc_max_N), format_number(fc),
-                          pct(relative_error(fc, m.fc_N)), within(fc, m.fc_min_N, m.fc_max_N), b_assumed, kForcesSource});
+                          pct(relative_error(fc, m.fc_N)), within(fc, m.fc_min_N, m.fc_max_N), b_assumed, data.source});
     table.rows.push_back({cond, "Ft", "N/mm", g4(m.ff_N), g4(m.ff_min_N), g4(m.ff_max_N), format_number(ft),
-                          pct(relative_error(ft, m.ff_N)), within(ft, m.ff_min_N, m.ff_max_N), b_assumed, kForcesSource});
+                          pct(relative_error(ft, m.ff_N)), within(ft, m.ff_min_N, m.ff_max_N), b_assumed, data.source});
     const double r_lo = m.ff_min_N / m.fc_max_N, r_hi = m.ff_max_N / m.fc_min_N;
     table.rows.push_back({cond, "Ft/Fc", "-", g4(m.ff_N / m.fc_N), g4(r_lo), g4(r_hi), format_number(ratio, 3),
                           pct(relative_error(ratio, m.ff_N / m.fc_N)), within(ratio, r_lo, r_hi),
-                          "independent of b (range: extreme combinations of the test ranges)", kForcesSource});
+                          "independent of b (range: extreme combinations of the test ranges)", data.source});
     table.rows.push_back({cond, "t_c", "µm", g4(measured_tc), "", "", format_number(tc, 3),
                           pct(relative_error(tc, measured_tc)), "",
-                          "simulated t0 / chip thickness ratio (chip analysis) vs measured h_avg", kForcesSource});
+                          "simulated t0 / chip thickness ratio (chip analysis) vs measured h_avg", data.source});
     if (const Condition* ref = reference_of(c); ref && ref != &c && ref->compared() && ok) {
       const MeasuredForces& mr = *ref->measured;
       const double meas = m.fc_N / mr.fc_N, sim = *fc / *ref->fc();
@@ -635,7 +694,7 @@ int run_validation(const ValidateOptions& o) {
                             g4(m.fc_max_N / mr.fc_min_N), format_number(sim, 3), pct(relative_error(sim, meas)),
                             within(sim, m.fc_min_N / mr.fc_max_N, m.fc_max_N / mr.fc_min_N),
                             fmt::format("independent of b; same speed, h = 0.1 mm run with r_n = {:g} µm", mr.edge_radius_um),
-                            kForcesSource});
+                            data.source});
       thickness_ratios.push_back({&c, meas, sim});
     }
     if (!ok) continue;
@@ -703,22 +762,31 @@ int run_validation(const ValidateOptions& o) {
   trends.headings = {"h (mm)", "tests", "speeds (m/min)", "measured dFc/d ln v (N/mm, b = 1 mm)",
                      "simulated dFc/d ln v (N/mm)", "measured (% of mean Fc)", "simulated (% of mean Fc)", "sign right"};
   int trends_total = 0, trends_right = 0;
-  std::vector<double> hs;
+  // One series per h and tool (measurements with the tool's angles may hold several tools at one h).
+  std::vector<const Condition*> series;
   for (const Condition* c : compared)
-    if (std::none_of(hs.begin(), hs.end(), [&](double h) { return same_h(h, c->h_mm); })) hs.push_back(c->h_mm);
-  std::sort(hs.begin(), hs.end());
+    if (std::none_of(series.begin(), series.end(),
+                     [&](const Condition* s) { return same_h(s->h_mm, c->h_mm) && same_tool(*s, *c); }))
+      series.push_back(c);
+  std::stable_sort(series.begin(), series.end(), [](const Condition* a, const Condition* b) { return a->h_mm < b->h_mm; });
+  const bool tools = std::any_of(series.begin(), series.end(), [](const Condition* c) { return !tool_text(*c).empty(); });
+  if (tools) {
+    trends.columns.push_back("tool");
+    trends.headings.push_back("tool");
+  }
   const auto mean_of = [](const std::vector<double>& x) {
     double sum = 0.0;
     for (double v : x) sum += v;
     return sum / static_cast<double>(x.size());
   };
-  for (double h : hs) {
+  for (const Condition* first : series) {
+    const double h = first->h_mm;
     for (const bool ok_only : {false, true}) {
       std::vector<double> v, fm, fs;
       std::vector<std::string> vs;
       bool any_short = false;
       for (const Condition* c : compared) {
-        if (!same_h(c->h_mm, h)) continue;
+        if (!same_h(c->h_mm, h) || !same_tool(*c, *first)) continue;
         any_short = any_short || c->measured->status != "ok";
         if (ok_only && c->measured->status != "ok") continue;
         v.push_back(c->speed_m_per_min());
@@ -738,6 +806,7 @@ int run_validation(const ValidateOptions& o) {
                              fmt::format("{:.3g}", *sm), fmt::format("{:.3g}", *ss),
                              fmt::format("{:.2f}", 100.0 * *sm / mean_of(fm)),
                              fmt::format("{:.2f}", 100.0 * *ss / mean_of(fs)), right ? "yes" : "no"});
+      if (tools) trends.rows.back().push_back(tool_text(*first));
     }
   }
   trends.write_csv(out / "validation_trends.csv");
@@ -777,7 +846,8 @@ int run_validation(const ValidateOptions& o) {
       incomplete.push_back(fmt::format("| `{}` | {} | {} |", c.id, c.result.status, c.result.message));
   }
   write_file_atomically(out / "validation.md", [&](std::ostream& s) {
-    s << "# Validation against published Ti-6Al-4V orthogonal-cutting measurements\n\n";
+    s << (data.builtin ? std::string("# Validation against published Ti-6Al-4V orthogonal-cutting measurements\n\n")
+                       : "# Validation against the measurements of " + o.measurements + "\n\n");
     if (o.quick)
       s << "**--quick: coarse resolution (cell = t0/4, 1 particle per cell, 4 cells of tool travel). This checks "
            "that the pipeline runs; the simulated numbers are not converged and must not be read as a "
@@ -828,11 +898,19 @@ int run_validation(const ValidateOptions& o) {
                                 "\"short\" (a short cut, maybe not steady: data file, caveat 4); the goal counts the "
                                 "rows over all tests.\n\n";
     s << "## Assumptions\n\n"
-         "- **Width of cut b = 1 mm (assumed).** The Klippel et al. data give forces in N for the whole width; b is "
-         "in the paper's section 2, which was not read. Absolute Fc, Ft in N/mm are compared under this assumption; "
-         "Ft/Fc and the ratios between conditions do not depend on it and are the primary comparison.\n"
-         "- Rake 0°, clearance 11° (preset defaults): the tool angles are not in the data file. The edge radius of "
-         "each force run is the measured mean r_n of its tests. Coulomb friction "
+      << (data.builtin
+              ? "- **Width of cut b = 1 mm (assumed).** The Klippel et al. data give forces in N for the whole width; b "
+                "is in the paper's section 2, which was not read. Absolute Fc, Ft in N/mm are compared under this "
+                "assumption; Ft/Fc and the ratios between conditions do not depend on it and are the primary "
+                "comparison.\n"
+                "- Rake 0°, clearance 11° (preset defaults): the tool angles are not in the data file. The edge radius "
+                "of each force run is the measured mean r_n of its tests. Coulomb friction "
+              : "- **Width of cut b = 1 mm (assumed).** The forces of " + o.measurements +
+                    " in N are compared as N/mm of a cut 1 mm wide: the file should hold forces per mm of width (or "
+                    "for b = 1 mm). Ft/Fc and the ratios between conditions do not depend on it.\n"
+                    "- Tool angles: the file's rake_deg and clearance_deg where its rows give them, else rake 0° and "
+                    "clearance 11° (the preset's, assumed; each case file says which). The edge radius of each run is "
+                    "the file's edge_radius_um. Coulomb friction ")
       << fmt::format("{:g} ({})", settings.friction, settings.friction_note)
       << (settings.friction_heat_share
               ? fmt::format("; a share {:g} of the frictional heat goes into the workpiece, the rest into the tool "
@@ -863,8 +941,10 @@ int run_validation(const ValidateOptions& o) {
          "cuts), the mean raw force over the last half of the cut (column force_window of validation_runs.csv). "
          "Columns Fc_ and Ft_drift_in_window_percent there give the second half's mean minus the first half's, in % "
          "of the mean: beyond ±10 % the cut had not reached a steady state.\n"
-         "- The measured speeds (≤ 6.4 m/s) are below the ultra-high-speed range of the target paper; chip-type "
-         "data at 5–75 m/s exist only as abstract statements without the transition speed.\n\n";
+      << (data.builtin ? "- The measured speeds (≤ 6.4 m/s) are below the ultra-high-speed range of the target paper; "
+                         "chip-type data at 5–75 m/s exist only as abstract statements without the transition speed.\n"
+                       : "")
+      << "\n";
 
     s << "## By condition\n\n" << by_condition_table(compared).markdown()
       << "\nMeasured mean / simulated; error = (simulated − measured) / measured. N/mm under b = 1 mm (assumed). "
@@ -880,30 +960,33 @@ int run_validation(const ValidateOptions& o) {
         << "resolution in this directory: " << join(not_run, ", ")
         << ". `mpmcut validate --out " << out.string() << "` with a selection (--h, --speeds-m-per-min, --conditions) "
         << "runs them; complete ones are kept.\n\n";
-    s << "## Where the data disagree or are thin\n\n"
-         "- At h = 0.1 mm and nearly equal speeds the Klippel condition means differ by more than the scatter "
-         "within a condition: 222.8 N at 10 m/min (r_n 40.8 µm) vs 209.2 N at 10.5 m/min (r_n 29.4 µm); tests marked "
-         "`short` (74.3, 88.9, 159–381 m/min) lie 5–10 % below neighbouring `ok` tests. The edge radius and the "
-         "unexplained status explain part of it; validation_forces.png shows every condition with its range "
-         "rather than a single curve.\n"
-         "- Ff/Fc: Klippel et al. give 0.6–0.7 at h = 0.1 mm and Ff > Fc at h ≤ 0.04 mm (r_n ≈ 37 µm ≥ h: "
-         "ploughing); Ducobu, Pantalé & Lauwers (CIRP JMST, [V]) report Ff ≈ 46 % of Fc at h = 40 µm, 10 m/min, with "
-         "a 15° rake, r_β = 20 µm tool in oblique cutting (λs = 6°). The two do not contradict each other — tool "
-         "geometry differs — but they show how strongly Ft/Fc depends on rake and edge radius, which this "
-         "comparison had to assume.\n"
-         "- Chip type: Sutter & List (2013) [A] state serrated chips at the lower speeds of 5–75 m/s and "
-         "discontinuous chips at very high speed without the transition speed in the abstract; Ducobu et al. [V] "
-         "saw only continuous chips at 5–40 m/min with a 15° rake (not simulated: below 1 m/s the explicit run is "
-         "too long, and the tool differs).\n\n";
+    if (data.builtin)
+      s << "## Where the data disagree or are thin\n\n"
+           "- At h = 0.1 mm and nearly equal speeds the Klippel condition means differ by more than the scatter "
+           "within a condition: 222.8 N at 10 m/min (r_n 40.8 µm) vs 209.2 N at 10.5 m/min (r_n 29.4 µm); tests marked "
+           "`short` (74.3, 88.9, 159–381 m/min) lie 5–10 % below neighbouring `ok` tests. The edge radius and the "
+           "unexplained status explain part of it; validation_forces.png shows every condition with its range "
+           "rather than a single curve.\n"
+           "- Ff/Fc: Klippel et al. give 0.6–0.7 at h = 0.1 mm and Ff > Fc at h ≤ 0.04 mm (r_n ≈ 37 µm ≥ h: "
+           "ploughing); Ducobu, Pantalé & Lauwers (CIRP JMST, [V]) report Ff ≈ 46 % of Fc at h = 40 µm, 10 m/min, with "
+           "a 15° rake, r_β = 20 µm tool in oblique cutting (λs = 6°). The two do not contradict each other — tool "
+           "geometry differs — but they show how strongly Ft/Fc depends on rake and edge radius, which this "
+           "comparison had to assume.\n"
+           "- Chip type: Sutter & List (2013) [A] state serrated chips at the lower speeds of 5–75 m/s and "
+           "discontinuous chips at very high speed without the transition speed in the abstract; Ducobu et al. [V] "
+           "saw only continuous chips at 5–40 m/min with a 15° rake (not simulated: below 1 m/s the explicit run is "
+           "too long, and the tool differs).\n\n";
     if (!hot.empty())
       s << "## Physically odd\n\nMaximum particle temperature above the material's melting temperature in: "
         << join(hot, ", ") << ". Single particles at the tool–chip contact usually; see the chip pictures (mpmcut plot DIR).\n\n";
     s << "## Files\n\nvalidation.csv (the comparison table), validation_goals.csv, validation_errors.csv, "
-         "validation_trends.csv, validation_runs.csv (one row per reported run), validation_parity.png, "
+         "validation_trends.csv, validation_runs.csv (one row per reported run), validation_measured.csv (the "
+         "measurements as read, one row per force condition), validation_parity.png, "
          "validation_speed.png, validation_thickness.png, validation_forces.png, validation_ratio.png, cases/*.toml (the "
          "run inputs), <condition>/ (result directories), logs/.\n\n"
-         "Data: data/experiments/ti64_klippel2024_orthogonal_forces.csv and ti64_chip_morphology.csv (sources and "
-         "caveats in their headers).\n";
+      << (data.builtin ? "Data: data/experiments/ti64_klippel2024_orthogonal_forces.csv and ti64_chip_morphology.csv "
+                         "(sources and caveats in their headers).\n"
+                       : "Data: " + o.measurements + " (--measurements).\n");
   });
   std::cout << "wrote " << (out / "validation.md").string()
             << ", validation.csv, validation_goals.csv, validation_errors.csv, validation_trends.csv, validation_runs.csv\n";
@@ -974,6 +1057,12 @@ void add_validate_command(CLI::App& app) {
   v->add_option("--material", o->material,
                 "Material set to run: a set of the library (default ti64-cutting; docs/materials.md) or of "
                 "--material-file");
+  v->add_option("--measurements", o->measurements,
+                "Validate against your own force measurements instead of the built-in Klippel et al. 2024 data: a CSV "
+                "in the layout of data/experiments/ti64_klippel2024_orthogonal_forces.csv (columns h_mm, vc_m_per_min, "
+                "Fc_mean_N, Ff_mean_N, edge_radius_um; optional Fc_/Ff_min_N, _max_N, n_tests, chip_thickness_um, "
+                "status, rake_deg, clearance_deg; forces per mm of width); the conditions are then its rows "
+                "(docs/results.md)");
   v->add_option("--material-file", o->material_file,
                 "A TOML file of [[material]] sets (as materials/*.toml, or the best_material.toml of `mpmcut "
                 "calibrate`): --material may name one of them (a file of one set needs no --material); every case "

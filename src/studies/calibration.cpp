@@ -32,15 +32,12 @@ constexpr double kFailedRunError = 10.0;
 // The relative error of a chip thickness that was measured but that the chip analysis could not give.
 constexpr double kMissingChipThicknessError = 1.0;
 
-std::string condition_id(const MeasuredForces& m) { return fmt::format("h{:g}mm_vc{:g}mpmin", m.h_mm, m.vc_m_per_min); }
+// The condition's result directory: the id validate gives it, less validate's "forces_" prefix.
+std::string condition_id(const MeasuredForces& m) { return force_condition_id(m).substr(std::string("forces_").size()); }
 
 CuttingCondition cutting_condition(const MeasuredForces& m) {
-  CuttingCondition c;
+  CuttingCondition c = force_condition(m);
   c.id = condition_id(m);
-  c.kind = "forces";
-  c.speed_m_per_s = m.vc_m_per_min / 60.0;
-  c.h_mm = m.h_mm;
-  c.edge_radius_um = m.edge_radius_um;
   return c;
 }
 

@@ -175,17 +175,38 @@ CalibrationConfig read_calibration_config(const fs::path& file, std::string_view
       s.require_key("h_mm", "uncut chip thickness of a row of the measurement file, mm");
       s.require_key("vc_m_per_min", "cutting speed of a row of the measurement file, m/min");
       const double h = s.number("h_mm", 0.0), vc = s.number("vc_m_per_min", 0.0);
+      // The tool's angles pick a row among rows of one h and speed (measurements with rake_deg / clearance_deg).
+      std::optional<double> rake, clearance;
+      if (s.has("rake_deg")) rake.emplace(s.number("rake_deg", 0.0));
+      if (s.has("clearance_deg")) clearance.emplace(s.number("clearance_deg", 0.0));
       const int cells_per_feed = static_cast<int>(s.integer("cells_per_feed", 0));  // 0: [runs] cells_per_feed
       if (s.has("cells_per_feed"))
         s.check("cells_per_feed", cells_per_feed >= 2 && cells_per_feed <= 100,
                 "an integer from 2 to 100 (this condition's cells across t0)", cells_per_feed);
       s.reject_unknown_keys();
+      const auto same_angle = [](const std::optional<double>& wanted, const std::optional<double>& row) {
+        return !wanted || (row && std::abs(*row - *wanted) < 1e-9);
+      };
       const MeasuredForces* found = nullptr;
+      std::string matching_lines;
+      int matches = 0;
       for (const MeasuredForces& r : rows)
-        if (std::abs(r.h_mm - h) < 1e-9 && std::abs(r.vc_m_per_min - vc) < 1e-6) found = &r;
+        if (std::abs(r.h_mm - h) < 1e-9 && std::abs(r.vc_m_per_min - vc) < 1e-6 && same_angle(rake, r.rake_deg) &&
+            same_angle(clearance, r.clearance_deg)) {
+          found = &r;
+          ++matches;
+          matching_lines += (matching_lines.empty() ? "" : ", ") + std::to_string(r.line);
+        }
+      const std::string angles = (rake ? fmt::format(", rake_deg = {}", *rake) : std::string()) +
+                                 (clearance ? fmt::format(", clearance_deg = {}", *clearance) : std::string());
       if (!found)
-        s.fail("vc_m_per_min", fmt::format("no row with h_mm = {} and vc_m_per_min = {} in {}", h, vc,
+        s.fail("vc_m_per_min", fmt::format("no row with h_mm = {} and vc_m_per_min = {}{} in {}", h, vc, angles,
                                            c.measurements_source));
+      if (matches > 1)
+        s.fail("vc_m_per_min",
+               fmt::format("{} rows of {} match h_mm = {}, vc_m_per_min = {}{} (lines {}): name one with rake_deg "
+                           "and/or clearance_deg",
+                           matches, c.measurements_source, h, vc, angles, matching_lines));
       for (const auto* list : {&c.training, &c.held_back})
         for (const MeasuredForces& r : *list)
           if (r.line == found->line)

@@ -93,6 +93,18 @@ std::vector<MeasuredForces> read_measured_forces(const DataFile& file) {
     const double n = file.number(r, "n_tests");
     m.n_tests = std::isfinite(n) ? static_cast<int>(n) : 1;
     if (const double t = file.number(r, "chip_thickness_um"); std::isfinite(t) && t > 0) m.chip_thickness_um = t;
+    if (const double a = file.number(r, "rake_deg"); std::isfinite(a)) {
+      if (!(a > -45.0 && a < 45.0))
+        throw InputError(fmt::format("{}:{}: column 'rake_deg': must be in (-45, 45) degrees, got {}", file.source,
+                                     r.line, a));
+      m.rake_deg = a;
+    }
+    if (const double a = file.number(r, "clearance_deg"); std::isfinite(a)) {
+      if (!(a > 0.0 && a < 45.0))
+        throw InputError(fmt::format("{}:{}: column 'clearance_deg': must be in (0, 45) degrees, got {}", file.source,
+                                     r.line, a));
+      m.clearance_deg = a;
+    }
     const auto status = r.cells.find("status");
     m.status = status == r.cells.end() || status->second.empty() ? "ok" : status->second;
     for (const auto& [key, value] : {std::pair{"h_mm", m.h_mm}, {"vc_m_per_min", m.vc_m_per_min},
@@ -102,6 +114,25 @@ std::vector<MeasuredForces> read_measured_forces(const DataFile& file) {
     out.push_back(m);
   }
   return out;
+}
+
+std::string force_condition_id(const MeasuredForces& m) {
+  std::string id = fmt::format("forces_h{:g}mm_vc{:g}mpmin", m.h_mm, m.vc_m_per_min);
+  if (m.rake_deg) id += fmt::format("_rake{:g}deg", *m.rake_deg);
+  if (m.clearance_deg) id += fmt::format("_clearance{:g}deg", *m.clearance_deg);
+  return id;
+}
+
+CuttingCondition force_condition(const MeasuredForces& m) {
+  CuttingCondition c;
+  c.id = force_condition_id(m);
+  c.kind = "forces";
+  c.speed_m_per_s = m.vc_m_per_min / 60.0;
+  c.h_mm = m.h_mm;
+  c.edge_radius_um = m.edge_radius_um;
+  c.rake_deg = m.rake_deg;
+  c.clearance_deg = m.clearance_deg;
+  return c;
 }
 
 int chip_cells_per_feed(int cells_per_feed) {
@@ -186,8 +217,11 @@ std::string condition_case_text(const CuttingCondition& c, const ConditionRunSet
   s += fmt::format("cutting_speed = {}\n", c.speed_m_per_s);
   s += fmt::format("uncut_chip_thickness = {}\n", h);
   s += "width_of_cut = 1e-3  # ASSUMPTION b = 1 mm: the width of cut is not in the Klippel data file\n";
-  s += "rake_angle_deg = 0.0       # ASSUMPTION: not in the data file\n";
-  s += "clearance_angle_deg = 11.0 # ASSUMPTION: not in the data file\n";
+  // Without the angles in the measurements, the text of the runs made before they could be given (records match).
+  s += c.rake_deg ? fmt::format("rake_angle_deg = {}  # from the measurements\n", *c.rake_deg)
+                  : "rake_angle_deg = 0.0       # ASSUMPTION: not in the data file\n";
+  s += c.clearance_deg ? fmt::format("clearance_angle_deg = {}  # from the measurements\n", *c.clearance_deg)
+                       : "clearance_angle_deg = 11.0 # ASSUMPTION: not in the data file\n";
   s += fmt::format("edge_radius = {}  # {}\n", c.edge_radius_um * 1e-6,
                    c.kind == "forces" ? "measured mean r_n of the tests" : "preset default: not stated in the source");
   s += fmt::format("friction = {}  # {}\n", o.friction, o.friction_note);

@@ -41,12 +41,16 @@ struct MeasuredForces {
   double ff_N = 0, ff_min_N = 0, ff_max_N = 0;  // feed (thrust) force
   double edge_radius_um = 0;
   std::optional<double> chip_thickness_um;      // measured chip thickness, where given
+  // The tool's angles, where the file gives them (columns rake_deg, clearance_deg); none: the preset's 0° / 11°,
+  // stated as assumptions in the case.
+  std::optional<double> rake_deg, clearance_deg;
   int n_tests = 0;
   std::string status;
 };
 
 // The columns a force file must have (calibration measurements: the same columns); min/max, n_tests,
-// status and chip_thickness_um are optional (min = max = mean, n = 1, "ok", none when absent).
+// status, chip_thickness_um, rake_deg and clearance_deg are optional (min = max = mean, n = 1, "ok", none, the
+// preset's angles when absent).
 const std::vector<std::string>& required_force_columns();
 std::vector<MeasuredForces> read_measured_forces(const DataFile& file);
 
@@ -57,7 +61,14 @@ struct CuttingCondition {
   double speed_m_per_s = 0;
   double h_mm = 0;
   double edge_radius_um = 0;  // measured r_n for force conditions; the preset's 5 um where the source gives none
+  std::optional<double> rake_deg, clearance_deg;  // from the measurements; none: the preset's (an assumption)
 };
+
+// The id (result directory name) of a force condition: forces_h<h>mm_vc<v>mpmin, with _rake<r>deg and
+// _clearance<c>deg where the measurements give the tool's angles.
+std::string force_condition_id(const MeasuredForces& m);
+// The simulated condition of a row of measured forces.
+CuttingCondition force_condition(const MeasuredForces& m);
 
 // How the conditions are run: resolution, material and friction.
 struct ConditionRunSettings {

@@ -214,6 +214,57 @@ def check_records(binary, scratch, out):
             fail("the record of friction 0.35 was replaced by a run of friction 0.2")
 
 
+def check_measurements(binary, scratch):
+    """--measurements: a user's force file with tool angles becomes the matrix (no chip-type conditions); its angles
+    reach the case files, the report names the file; bad files exit 2 naming file, line and column."""
+    data = os.path.join(scratch, "my_forces.csv")
+    with open(data, "w") as f:
+        f.write("# my tests, forces per mm of width\n"
+                "h_mm,vc_m_per_min,Fc_mean_N,Ff_mean_N,edge_radius_um,rake_deg,clearance_deg\n"
+                "0.05,120,110,60,20,15,7\n"
+                "0.05,120,130,80,20,-6,7\n"
+                "0.05,240,100,55,20,15,7\n"
+                "0.05,240,125,75,20,-6,7\n")
+    mine = os.path.join(scratch, "measurements")
+    ids = listed(validate(binary, "--list", "--measurements", data, "--out", mine))
+    want = ["forces_h0.05mm_vc120mpmin_rake15deg_clearance7deg", "forces_h0.05mm_vc120mpmin_rake-6deg_clearance7deg",
+            "forces_h0.05mm_vc240mpmin_rake15deg_clearance7deg", "forces_h0.05mm_vc240mpmin_rake-6deg_clearance7deg"]
+    if ids != want:
+        fail(f"--measurements --list: {ids}, expected {want}")
+    if case_value(os.path.join(mine, "cases", want[1] + ".toml"), "rake_angle_deg") != -6.0:
+        fail("the row's rake angle did not reach its case file")
+    validate(binary, "--quick", "--no-plots", "--conditions", want[0], "--measurements", data, "--out", mine)
+    validate(binary, "--quick", "--no-plots", "--measurements", data, "--out", mine)  # without a selection: all rows
+    # One speed trend per tool, not one over both tools at h = 0.05 mm.
+    trends = [r for r in read_csv(os.path.join(mine, "validation_trends.csv")) if r["tests"] == "all"]
+    if sorted(r["tool"] for r in trends) != ["rake -6°, clearance 7°", "rake 15°, clearance 7°"] or \
+            any(r["speeds_m_per_min"] != "120 240" for r in trends):
+        fail(f"speed trends with two tools: {trends}")
+    with open(os.path.join(mine, "validation.md")) as f:
+        md = f.read()
+    for text in ("Data: " + data, "rake 15°", "clearance 7°", "# Validation against the measurements of " + data):
+        if text not in md:
+            fail(f"validation.md with --measurements does not say '{text}'")
+    if "Sutter" in md or "Klippel condition means" in md:
+        fail("validation.md with --measurements still carries the built-in data's notes")
+    rows = [r for r in read_csv(os.path.join(mine, "validation.csv")) if r["quantity"] == "Fc"]
+    if len(rows) != 4 or float(rows[0]["measured_mean"]) != 110.0 or data not in rows[0]["source"]:
+        fail(f"validation.csv with --measurements: {rows}")
+    for text, words in (("0.05,120,110,60,20\n", ["my_bad.csv:1", "missing column(s) 'edge_radius_um'"]),
+                        ("0.05,120,110,60,20,50\n", ["my_bad.csv:3", "rake_deg", "(-45, 45)"]),
+                        ("0.05,120,110,60,20,5\n0.05,120,111,61,20,5\n", ["my_bad.csv:4", "on line 3 already"])):
+        bad_file = os.path.join(scratch, "my_bad.csv")
+        with open(bad_file, "w") as f:
+            if "missing" in words[1]:
+                f.write("h_mm,vc_m_per_min,Fc_mean_N,Ff_mean_N\n" + text)
+            else:
+                f.write("# mine\nh_mm,vc_m_per_min,Fc_mean_N,Ff_mean_N,edge_radius_um,rake_deg\n" + text)
+        bad = validate(binary, "--list", "--measurements", bad_file, "--out", mine + "_bad", expect=2)
+        if not all(w in bad.stderr for w in words):
+            fail(f"bad measurement file: the error must name {words}: {bad.stderr}")
+    validate(binary, "--list", "--measurements", os.path.join(scratch, "none.csv"), "--out", mine + "_bad", expect=2)
+
+
 def main(binary, scratch):
     shutil.rmtree(scratch, ignore_errors=True)
     os.makedirs(scratch)
@@ -303,6 +354,8 @@ def main(binary, scratch):
         bad = validate(binary, "--list", "--material-key", key, "--out", keyed, expect=2)
         if not all(w in bad.stderr for w in words):
             fail(f"--material-key {key}: the error must name {words}: {bad.stderr}")
+
+    check_measurements(binary, scratch)
 
     # Resumption: part one, then the quick set (a superset) keeps part one.
     out = os.path.join(scratch, "validation")

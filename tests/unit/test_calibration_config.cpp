@@ -3,6 +3,8 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -161,6 +163,62 @@ TEST(CalibrationConfig, MeasurementCellThatIsNotANumber) {
   const std::string e = error_of("name = \"fit\"\n" + kParameter + "[data]\nmeasurements = \"bad.csv\"\n" +
                                  "training = [{h_mm = 0.1, vc_m_per_min = 100}]\n");
   EXPECT_NE(e.find("bad.csv:2: column 'Fc_mean_N': must be a number, got \"2OO\""), std::string::npos) << e;
+}
+
+// A measurement file may give the tool's angles per row: they reach the row's id and case file; rows without them keep
+// the preset's angles as stated assumptions (the case text of the runs made before the columns existed).
+TEST(MeasuredForces, ToolAnglesOfARowReachItsIdAndCaseFile) {
+  const DataFile f = read_data_file("h_mm,vc_m_per_min,Fc_mean_N,Ff_mean_N,edge_radius_um,rake_deg,clearance_deg\n"
+                                    "0.1,100,200,120,30,15,7\n"
+                                    "0.1,100,230,150,30,-6,\n"
+                                    "0.1,100,210,130,30,,\n",
+                                    "tools.csv");
+  const std::vector<MeasuredForces> rows = read_measured_forces(f);
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(force_condition_id(rows[0]), "forces_h0.1mm_vc100mpmin_rake15deg_clearance7deg");
+  EXPECT_EQ(force_condition_id(rows[1]), "forces_h0.1mm_vc100mpmin_rake-6deg");
+  EXPECT_EQ(force_condition_id(rows[2]), "forces_h0.1mm_vc100mpmin");
+  const ConditionRunSettings settings;
+  const std::string with = condition_case_text(force_condition(rows[0]), settings);
+  EXPECT_NE(with.find("rake_angle_deg = 15  # from the measurements"), std::string::npos) << with;
+  EXPECT_NE(with.find("clearance_angle_deg = 7  # from the measurements"), std::string::npos) << with;
+  const std::string half = condition_case_text(force_condition(rows[1]), settings);
+  EXPECT_NE(half.find("rake_angle_deg = -6  # from the measurements"), std::string::npos) << half;
+  EXPECT_NE(half.find("clearance_angle_deg = 11.0 # ASSUMPTION"), std::string::npos) << half;
+  const std::string without = condition_case_text(force_condition(rows[2]), settings);
+  EXPECT_NE(without.find("rake_angle_deg = 0.0       # ASSUMPTION: not in the data file\n"), std::string::npos);
+
+  for (const auto& [cells, what] : {std::pair{"45,7", "column 'rake_deg': must be in (-45, 45) degrees, got 45"},
+                                    std::pair{"5,0", "column 'clearance_deg': must be in (0, 45) degrees, got 0"}}) {
+    const DataFile bad = read_data_file(
+        std::string("h_mm,vc_m_per_min,Fc_mean_N,Ff_mean_N,edge_radius_um,rake_deg,clearance_deg\n0.1,100,200,120,30,") +
+            cells + "\n",
+        "bad_angles.csv");
+    try {
+      read_measured_forces(bad);
+      ADD_FAILURE() << "no error for " << cells;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(std::string("bad_angles.csv:2: ") + what), std::string::npos) << e.what();
+    }
+  }
+}
+
+// Calibrate picks a row by h and speed, and by the tool's angles where rows of one h and speed differ in them; an
+// entry that matches two rows is an error naming their lines.
+TEST(CalibrationConfig, ToolAnglesPickARowAmongRowsOfOneCondition) {
+  write("angles.csv", "h_mm,vc_m_per_min,Fc_mean_N,Ff_mean_N,edge_radius_um,rake_deg\n0.1,100,200,120,30,15\n"
+                      "0.1,100,230,150,30,-6\n");
+  const std::string head = "name = \"fit\"\n" + kParameter + "[data]\nmeasurements = \"angles.csv\"\n";
+  const CalibrationConfig c = read_calibration_config(
+      write("pick.toml", head + "training = [{h_mm = 0.1, vc_m_per_min = 100, rake_deg = -6}]\n"), kMeasurements);
+  ASSERT_EQ(c.training.size(), 1u);
+  EXPECT_EQ(c.training[0].fc_N, 230.0);
+  EXPECT_EQ(*c.training[0].rake_deg, -6.0);
+  const std::string e = error_of(head + "training = [{h_mm = 0.1, vc_m_per_min = 100}]\n");
+  EXPECT_NE(e.find("2 rows of"), std::string::npos) << e;
+  EXPECT_NE(e.find("(lines 2, 3): name one with rake_deg"), std::string::npos) << e;
+  const std::string none = error_of(head + "training = [{h_mm = 0.1, vc_m_per_min = 100, rake_deg = 5}]\n");
+  EXPECT_NE(none.find("no row with h_mm = 0.1 and vc_m_per_min = 100, rake_deg = 5"), std::string::npos) << none;
 }
 
 TEST(CalibrationConfig, UnknownOptimizerAlgorithm) {
