@@ -8,7 +8,8 @@ and measurements are paired by condition id). Writes into VALIDATION_DIR:
   validation_forces.png  Fc and Ft vs cutting speed at h = 0.1 mm (or, without measurements there, at the h with
                          the most): every measured condition mean with its min-max
                          range as error bars (tests marked "short" as open symbols), simulated runs as large symbols;
-                         the measured forces in N are drawn as N/mm under the ASSUMPTION b = 1 mm (stated on the plot);
+                         the measured forces are drawn per mm of the file's width of cut, or as N/mm under the
+                         ASSUMPTION b = 1 mm where it gives none (stated on the plot);
   validation_ratio.png   Ft/Fc vs cutting speed at h = 0.1 mm (independent of b), same symbols;
   validation_parity.png  simulated vs measured Fc, Ft, Ft/Fc and chip thickness t_c of every complete force
                          condition: 45-degree line, +-15 % band, measured min-max as horizontal bars;
@@ -23,6 +24,16 @@ import sys
 import plot_style as ps
 from plot_style import plt
 from matplotlib.ticker import FuncFormatter, NullFormatter
+
+def width_note(measured):
+    """How the measured forces became N/mm (validation_measured.csv: width_mm blank = 1 mm assumed)."""
+    given = sum(1 for m in measured if m["width_mm"])
+    if given == 0:
+        return "Measured N as N/mm with ASSUMED width of cut b = 1 mm"
+    if given == len(measured):
+        return "Measured N divided by the data file's width of cut"
+    return "Measured N divided by the data file's width of cut, or by an ASSUMED 1 mm where it gives none"
+
 
 def pick_series(measured):
     """The (h, tool) of the speed figures: h = 0.1 mm if measured, else the h with the most conditions; the tool
@@ -66,9 +77,9 @@ def main(argv):
             if not rows:
                 continue
             v = [f(m["vc_m_per_min"]) for m in rows]
-            y = [f(m[f"{key}_mean_N"]) for m in rows]
-            lo = [yy - f(m[f"{key}_min_N"]) for yy, m in zip(y, rows)]
-            hi = [f(m[f"{key}_max_N"]) - yy for yy, m in zip(y, rows)]
+            y = [f(m[f"{key}_mean_N_per_mm"]) for m in rows]
+            lo = [yy - f(m[f"{key}_min_N_per_mm"]) for yy, m in zip(y, rows)]
+            hi = [f(m[f"{key}_max_N_per_mm"]) - yy for yy, m in zip(y, rows)]
             ax.errorbar(v, y, yerr=[lo, hi], fmt="o", ms=3.5, color=color, mfc=mfc, capsize=2, lw=0.8,
                         label=f"{name} measured{' (status short)' if status == 'short' else ''}")
         if sim:
@@ -80,7 +91,7 @@ def main(argv):
     ax.set_ylim(bottom=0)
     ax.set_title(f"{shown}: measured ({source}) vs simulated", fontsize=9)
     ax.legend(frameon=False, fontsize=7, ncol=2, loc="lower left")
-    notes = ["Measured N as N/mm with ASSUMED width of cut b = 1 mm; bars: min–max of the repeated tests."]
+    notes = [width_note(all_measured) + "; bars: min–max of the repeated tests."]
     if fallback:
         notes.append("Simulated means over the last half of the cut (runs ended before their steady window).")
     if quick:
@@ -95,9 +106,9 @@ def main(argv):
         if not rows:
             continue
         v = [f(m["vc_m_per_min"]) for m in rows]
-        r = [f(m["Ff_mean_N"]) / f(m["Fc_mean_N"]) for m in rows]
-        lo = [rr - f(m["Ff_min_N"]) / f(m["Fc_max_N"]) for rr, m in zip(r, rows)]
-        hi = [f(m["Ff_max_N"]) / f(m["Fc_min_N"]) - rr for rr, m in zip(r, rows)]
+        r = [f(m["Ff_mean_N_per_mm"]) / f(m["Fc_mean_N_per_mm"]) for m in rows]
+        lo = [rr - f(m["Ff_min_N_per_mm"]) / f(m["Fc_max_N_per_mm"]) for rr, m in zip(r, rows)]
+        hi = [f(m["Ff_max_N_per_mm"]) / f(m["Fc_min_N_per_mm"]) - rr for rr, m in zip(r, rows)]
         ax.errorbar(v, r, yerr=[lo, hi], fmt="o", ms=3.5, color="#444444", mfc=mfc, capsize=2, lw=0.8,
                     label=f"measured{' (status short)' if status == 'short' else ''}")
     if sim:
@@ -113,7 +124,7 @@ def main(argv):
                 if not tool_shown else f"Tool: {tool_shown}."), fontsize=6.5, color="0.3", va="top")
     ps.save(fig, os.path.join(d, "validation_ratio.png"))
 
-    note = "Measured N as N/mm with ASSUMED b = 1 mm." + (" --quick: not converged." if quick else "")
+    note = width_note(all_measured) + "." + (" --quick: not converged." if quick else "")
     parity(d, runs, all_measured, note, source)
     trend_panels(d, runs, all_measured, "vc_m_per_min", "h_mm", note, source)
     trend_panels(d, runs, all_measured, "h_mm", "vc_m_per_min", note, source)
@@ -150,12 +161,12 @@ def parity(d, runs, measured, note, source):
                 continue
             fc_s, ft_s = f(r["cutting_force_N_per_mm"]), f(r["thrust_force_N_per_mm"])
             if q == "Fc":
-                x, y, a, b = f(m["Fc_mean_N"]), fc_s, f(m["Fc_min_N"]), f(m["Fc_max_N"])
+                x, y, a, b = f(m["Fc_mean_N_per_mm"]), fc_s, f(m["Fc_min_N_per_mm"]), f(m["Fc_max_N_per_mm"])
             elif q == "Ft":
-                x, y, a, b = f(m["Ff_mean_N"]), ft_s, f(m["Ff_min_N"]), f(m["Ff_max_N"])
+                x, y, a, b = f(m["Ff_mean_N_per_mm"]), ft_s, f(m["Ff_min_N_per_mm"]), f(m["Ff_max_N_per_mm"])
             elif q == "ratio":
-                x, y = f(m["Ff_mean_N"]) / f(m["Fc_mean_N"]), ft_s / fc_s
-                a, b = f(m["Ff_min_N"]) / f(m["Fc_max_N"]), f(m["Ff_max_N"]) / f(m["Fc_min_N"])
+                x, y = f(m["Ff_mean_N_per_mm"]) / f(m["Fc_mean_N_per_mm"]), ft_s / fc_s
+                a, b = f(m["Ff_min_N_per_mm"]) / f(m["Fc_max_N_per_mm"]), f(m["Ff_max_N_per_mm"]) / f(m["Fc_min_N_per_mm"])
             else:
                 x, y = f(m.get("chip_thickness_um", "")), f(r.get("chip_thickness_um", ""))
                 a = b = x
@@ -202,9 +213,9 @@ def trend_panels(d, runs, measured, x_key, group_key, note, source):
         ms = sorted(ms, key=lambda m: f(m[x_key]))
         for key, color, label in (("Fc", ps.COLOR_FC, "$F_c$"), ("Ff", ps.COLOR_FT, "$F_t$")):
             x = [f(m[x_key]) for m in ms]
-            y = [f(m[f"{key}_mean_N"]) for m in ms]
-            lo = [yy - f(m[f"{key}_min_N"]) for yy, m in zip(y, ms)]
-            hi = [f(m[f"{key}_max_N"]) - yy for yy, m in zip(y, ms)]
+            y = [f(m[f"{key}_mean_N_per_mm"]) for m in ms]
+            lo = [yy - f(m[f"{key}_min_N_per_mm"]) for yy, m in zip(y, ms)]
+            hi = [f(m[f"{key}_max_N_per_mm"]) - yy for yy, m in zip(y, ms)]
             ax.errorbar(x, y, yerr=[lo, hi], fmt="o-", ms=3.5, color=color, mfc="white", capsize=2, lw=0.7,
                         label=f"{label} measured")
             col = "cutting_force_N_per_mm" if key == "Fc" else "thrust_force_N_per_mm"

@@ -247,7 +247,8 @@ std::vector<Condition> matrix_conditions(const ConditionRunSettings& settings, c
   for (const MeasuredForces& m : read_measured_forces(data.file)) {
     Condition c;
     static_cast<CuttingCondition&>(c) = force_condition(m);
-    c.measured = m;
+    // Forces per mm of width from here on: the file's width, or b = 1 mm ASSUMED (the simulated cut is 1 mm wide).
+    c.measured = m.per_mm_of_width(1.0);
     if (const auto [it, added] = line_of_id.emplace(c.id, m.line); !added)
       throw InputError(fmt::format("{}:{}: the condition {} is on line {} already (one row per h, speed and tool "
                                    "angles: rows of repeated tests are averaged into one, as in the data files)",
@@ -484,6 +485,13 @@ int run_validation(const ValidateOptions& o) {
   const ConditionRunSettings settings = run_settings(o);
   const ForceData data = force_data(o);
   std::vector<Condition> conditions = matrix_conditions(settings, data);
+  // How the measured forces became N/mm: the rows' own width of cut, or the assumed b = 1 mm.
+  const auto forces = std::count_if(conditions.begin(), conditions.end(), [](const Condition& c) { return c.measured.has_value(); });
+  const auto with_width = std::count_if(conditions.begin(), conditions.end(),
+                                        [](const Condition& c) { return c.measured && c.measured->width_mm; });
+  const std::string b_basis = with_width == 0         ? "b = 1 mm assumed"
+                              : with_width == forces ? "b of the data file"
+                                                     : "b of the data file, 1 mm assumed where it gives none";
   select_conditions(conditions, o);
   // A changed material key that the material rejects (unknown, out of range) stops the study before any run.
   if (!settings.material_overrides.empty()) {
@@ -624,17 +632,21 @@ int run_validation(const ValidateOptions& o) {
   }
   runs_table.write_csv(out / "validation_runs.csv");
 
-  // The measurements as this report read them (ranges filled in, tool angles as text), one row per force condition:
+  // The measurements as this report read them (forces per mm of width: the row's width_mm, blank = 1 mm assumed;
+  // ranges filled in, tool angles as text), one row per force condition:
   // what the plots draw, so that they need not read the data file again.
   TextTable measured_table;
-  measured_table.columns = {"condition", "h_mm", "vc_m_per_min", "tool", "edge_radius_um", "Fc_mean_N", "Fc_min_N",
-                            "Fc_max_N", "Ff_mean_N", "Ff_min_N", "Ff_max_N", "chip_thickness_um", "status", "source"};
+  measured_table.columns = {"condition",       "h_mm",           "vc_m_per_min",   "tool",
+                            "edge_radius_um",  "width_mm",       "Fc_mean_N_per_mm", "Fc_min_N_per_mm",
+                            "Fc_max_N_per_mm", "Ff_mean_N_per_mm", "Ff_min_N_per_mm", "Ff_max_N_per_mm",
+                            "chip_thickness_um", "status",       "source"};
   measured_table.headings = measured_table.columns;
   for (const Condition& c : conditions) {
     if (c.kind != "forces") continue;
     const MeasuredForces& m = *c.measured;
     measured_table.rows.push_back({c.id, fmt::format("{:g}", m.h_mm), fmt::format("{:g}", m.vc_m_per_min), tool_text(c),
-                                   fmt::format("{:g}", m.edge_radius_um), fmt::format("{:g}", m.fc_N),
+                                   fmt::format("{:g}", m.edge_radius_um), format_number(m.width_mm, 6),
+                                   fmt::format("{:g}", m.fc_N),
                                    fmt::format("{:g}", m.fc_min_N), fmt::format("{:g}", m.fc_max_N),
                                    fmt::format("{:g}", m.ff_N), fmt::format("{:g}", m.ff_min_N),
                                    fmt::format("{:g}", m.ff_max_N), format_number(m.chip_thickness_um, 6), m.status,
@@ -675,7 +687,8 @@ int run_validation(const ValidateOptions& o) {
     const auto fc = ok ? c.fc() : std::nullopt, ft = ok ? c.ft() : std::nullopt, ratio = ok ? c.ratio() : std::nullopt;
     const auto tc = ok ? c.chip_thickness_um() : std::nullopt;
     const double measured_tc = m.chip_thickness_um.value_or(NAN);
-    const std::string b_assumed = "N/mm vs N with b = 1 mm ASSUMED (b not in the data file)";
+    const std::string b_assumed = m.width_mm ? fmt::format("N/mm vs N / b, b = {:g} mm of the data file", *m.width_mm)
+                                             : "N/mm vs N with b = 1 mm ASSUMED (b not in the data file)";
     table.rows.push_back({cond, "Fc", "N/mm", g4(m.fc_N), g4(m.fc_min_N), g4(m.fc_max_N), format_number(fc),
                           pct(relative_error(fc, m.fc_N)), within(fc, m.fc_min_N, m.fc_max_N), b_assumed, data.source});
     table.rows.push_back({cond, "Ft", "N/mm", g4(m.ff_N), g4(m.ff_min_N), g4(m.ff_max_N), format_number(ft),
@@ -735,12 +748,12 @@ int run_validation(const ValidateOptions& o) {
                            s.count ? compared[s.worst_index]->id : ""});
     return s;
   };
-  const ErrorSummary s_fc = error_row("Fc", "N/mm (b = 1 mm assumed)", err_fc);
-  error_row("Ft", "N/mm (b = 1 mm assumed)", err_ft);
+  const ErrorSummary s_fc = error_row("Fc", "N/mm (" + b_basis + ")", err_fc);
+  error_row("Ft", "N/mm (" + b_basis + ")", err_ft);
   const ErrorSummary s_ratio = error_row("Ft/Fc", "-", err_ratio);
   error_row("t_c", "µm", err_tc);
-  error_row("Fc, steady runs", "N/mm (b = 1 mm assumed)", steady_fc);
-  error_row("Ft, steady runs", "N/mm (b = 1 mm assumed)", steady_ft);
+  error_row("Fc, steady runs", "N/mm (" + b_basis + ")", steady_fc);
+  error_row("Ft, steady runs", "N/mm (" + b_basis + ")", steady_ft);
   error_row("Ft/Fc, steady runs", "-", steady_ratio);
   std::vector<std::optional<double>> err_thickness;
   for (const auto& t : thickness_ratios) err_thickness.push_back(relative_error(t.simulated, t.measured));
@@ -759,7 +772,7 @@ int run_validation(const ValidateOptions& o) {
   TextTable trends;
   trends.columns = {"h_mm", "tests", "speeds_m_per_min", "measured_slope_N_per_mm", "simulated_slope_N_per_mm",
                     "measured_slope_percent", "simulated_slope_percent", "sign_right"};
-  trends.headings = {"h (mm)", "tests", "speeds (m/min)", "measured dFc/d ln v (N/mm, b = 1 mm)",
+  trends.headings = {"h (mm)", "tests", "speeds (m/min)", "measured dFc/d ln v (N/mm, " + b_basis + ")",
                      "simulated dFc/d ln v (N/mm)", "measured (% of mean Fc)", "simulated (% of mean Fc)", "sign right"};
   int trends_total = 0, trends_right = 0;
   // One series per h and tool (measurements with the tool's angles may hold several tools at one h).
@@ -825,7 +838,7 @@ int run_validation(const ValidateOptions& o) {
   goals.rows.push_back({"sign of the speed trend of Fc (dFc/d ln v) right at each h with ≥ 2 speeds",
                         trends_total ? fmt::format("{} of {} right", trends_right, trends_total) : "",
                         std::to_string(trends_total), met(trends_total, trends_right == trends_total)});
-  goals.rows.push_back({"mean absolute error of Fc < 15 % (b = 1 mm assumed)",
+  goals.rows.push_back({"mean absolute error of Fc < 15 % (" + b_basis + ")",
                         s_fc.count ? fmt::format("mean {:.1f} %", 100 * s_fc.mean_abs) : "", std::to_string(s_fc.count),
                         met(s_fc.count, s_fc.mean_abs < kGoalMeanFcError)});
   goals.write_csv(out / "validation_goals.csv");
@@ -876,8 +889,10 @@ int run_validation(const ValidateOptions& o) {
                        join(unresolved_bands, ", "));
     s << revisions_text(conditions) << "\n\n";
     s << "## Goals\n\n" << goals.markdown() << "\n";
-    s << "Under the stated assumption b = 1 mm; no parameter was tuned per condition (one material set, one friction "
-         "coefficient for the whole matrix).\n\n";
+    s << (with_width == forces ? std::string("No") : "Under the stated assumption b = 1 mm" +
+                                                          std::string(with_width > 0 ? " where the data give no width" : "") +
+                                                          "; no")
+      << " parameter was tuned per condition (one material set, one friction coefficient for the whole matrix).\n\n";
     s << "## Errors over the complete force conditions\n\n" << errors.markdown() << "\n";
     s << fmt::format("\"steady runs\": the {} of {} runs whose mean Fc and Ft change by at most {:g} % between the halves "
                      "of the steady window (summary.json steady_window.drift).{}\n\n",
@@ -905,9 +920,14 @@ int run_validation(const ValidateOptions& o) {
                 "comparison.\n"
                 "- Rake 0°, clearance 11° (preset defaults): the tool angles are not in the data file. The edge radius "
                 "of each force run is the measured mean r_n of its tests. Coulomb friction "
-              : "- **Width of cut b = 1 mm (assumed).** The forces of " + o.measurements +
-                    " in N are compared as N/mm of a cut 1 mm wide: the file should hold forces per mm of width (or "
-                    "for b = 1 mm). Ft/Fc and the ratios between conditions do not depend on it.\n"
+              : (with_width == forces
+                     ? "- **Width of cut**: the measured forces of " + o.measurements +
+                           " are divided by each row's width_mm and compared as N/mm.\n"
+                     : "- **Width of cut b = 1 mm (assumed)** for the " + std::to_string(forces - with_width) + " of " +
+                           std::to_string(forces) + " rows of " + o.measurements +
+                           " without a width_mm: their forces in N are compared as N/mm of a cut 1 mm wide; the rows "
+                           "with a width are divided by it. Ft/Fc and the ratios between conditions do not depend on "
+                           "it.\n") +
                     "- Tool angles: the file's rake_deg and clearance_deg where its rows give them, else rake 0° and "
                     "clearance 11° (the preset's, assumed; each case file says which). The edge radius of each run is "
                     "the file's edge_radius_um. Coulomb friction ")
@@ -947,7 +967,7 @@ int run_validation(const ValidateOptions& o) {
       << "\n";
 
     s << "## By condition\n\n" << by_condition_table(compared).markdown()
-      << "\nMeasured mean / simulated; error = (simulated − measured) / measured. N/mm under b = 1 mm (assumed). "
+      << "\nMeasured mean / simulated; error = (simulated − measured) / measured. N/mm (" << b_basis << "). "
          "\"steady\": both forces drift by at most "
       << fmt::format("{:g}", kSteadyDriftWarningPercent) << " % between the halves of the steady window.\n\n";
     s << "## Comparison\n\n" << table.markdown() << "\n";
@@ -1061,7 +1081,8 @@ void add_validate_command(CLI::App& app) {
                 "Validate against your own force measurements instead of the built-in Klippel et al. 2024 data: a CSV "
                 "in the layout of data/experiments/ti64_klippel2024_orthogonal_forces.csv (columns h_mm, vc_m_per_min, "
                 "Fc_mean_N, Ff_mean_N, edge_radius_um; optional Fc_/Ff_min_N, _max_N, n_tests, chip_thickness_um, "
-                "status, rake_deg, clearance_deg; forces per mm of width); the conditions are then its rows "
+                "status, rake_deg, clearance_deg, width_mm: forces in N are divided by it, else b = 1 mm is assumed); the "
+                "conditions are then its rows "
                 "(docs/results.md)");
   v->add_option("--material-file", o->material_file,
                 "A TOML file of [[material]] sets (as materials/*.toml, or the best_material.toml of `mpmcut "

@@ -219,7 +219,7 @@ std::vector<ConditionResult> Calibrator::run_conditions(const std::vector<Measur
 Calibrator::Errors Calibrator::errors(const MeasuredForces& m, const ConditionResult& r) const {
   Errors e;
   const bool failed = r.status != "complete" || !r.fc_N_per_mm || !r.ft_N_per_mm;
-  const double b = c_.width_of_cut_mm;  // measured N over the ASSUMED width -> N/mm
+  const double b = m.width_mm.value_or(c_.width_of_cut_mm);  // the row's width, else the ASSUMED one: N -> N/mm
   e.fc = failed ? kFailedRunError : (*r.fc_N_per_mm - m.fc_N / b) / (m.fc_N / b);
   e.ft = failed ? kFailedRunError : (*r.ft_N_per_mm - m.ff_N / b) / (m.ff_N / b);
   if (m.chip_thickness_um)
@@ -374,7 +374,7 @@ void Calibrator::write_results(const Evaluation& best, const std::vector<Conditi
   for (const MeasuredForces& m : c_.held_back) held_list += (held_list.empty() ? "" : ", ") + condition_id(m);
   const std::string objective_text = fmt::format(
       "weighted RMS relative error, weights Fc {:g}, Ft {:g}, chip thickness {:g}; measured forces in N divided by "
-      "an ASSUMED width of cut b = {:g} mm",
+      "the width of cut of the measurement file's rows (column width_mm) or, where it gives none, an ASSUMED b = {:g} mm",
       c_.weight_fc, c_.weight_ft, c_.weight_chip_thickness, c_.width_of_cut_mm);
   const bool global_stage = c_.global_algorithm != "none" && c_.global_evaluations > 0;
   const std::string budget_text =
@@ -423,7 +423,7 @@ void Calibrator::write_results(const Evaluation& best, const std::vector<Conditi
   const auto row = [&](const std::string& set, const MeasuredForces& m, const ConditionResult& r,
                        std::vector<std::string>& cells) {
     const Errors e = errors(m, r);
-    const double b = c_.width_of_cut_mm;
+    const double b = m.width_mm.value_or(c_.width_of_cut_mm);
     const bool ok = r.status == "complete";
     cells = {set, condition_id(m), fmt::format("{:g}", m.h_mm), fmt::format("{:g}", m.vc_m_per_min),
              fmt::format("{:.4g}", m.fc_N / b), number_text(r.fc_N_per_mm), ok ? percent(e.fc) : "",
@@ -468,8 +468,8 @@ void Calibrator::write_results(const Evaluation& best, const std::vector<Conditi
     s << "\n## Budget\n\n" << budget_text << fmt::format("; {} evaluations in this directory. Runs at {}.\n\n",
                                                          sequence_.size(), resolution);
     s << "## Errors at the best set: training and held back\n\n" << table.markdown() << "\n";
-    s << "Error % = (simulated − measured) / measured; measured N/mm = measured N / b with b = "
-      << c_.width_of_cut_mm << " mm ASSUMED (the width of cut is not in the data file).\n\n";
+    s << "Error % = (simulated − measured) / measured; measured N/mm = measured N / b with b the row's width_mm "
+      << "where the data file gives it, else " << c_.width_of_cut_mm << " mm ASSUMED.\n\n";
     s << "Data: " << c_.measurements_source << ".\n\n";
     s << "## Files\n\nbest_material.toml (the set, with its provenance), evaluations.csv (every evaluation: "
          "parameters, per-condition forces, objective), calibration_best.csv (this table), convergence.png, "

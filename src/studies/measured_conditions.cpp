@@ -105,6 +105,11 @@ std::vector<MeasuredForces> read_measured_forces(const DataFile& file) {
                                      r.line, a));
       m.clearance_deg = a;
     }
+    if (const double b = file.number(r, "width_mm"); std::isfinite(b)) {
+      if (!(b > 0.0 && b <= 1000.0))
+        throw InputError(fmt::format("{}:{}: column 'width_mm': must be in (0, 1000] mm, got {}", file.source, r.line, b));
+      m.width_mm = b;
+    }
     const auto status = r.cells.find("status");
     m.status = status == r.cells.end() || status->second.empty() ? "ok" : status->second;
     for (const auto& [key, value] : {std::pair{"h_mm", m.h_mm}, {"vc_m_per_min", m.vc_m_per_min},
@@ -114,6 +119,13 @@ std::vector<MeasuredForces> read_measured_forces(const DataFile& file) {
     out.push_back(m);
   }
   return out;
+}
+
+MeasuredForces MeasuredForces::per_mm_of_width(double assumed_width_mm) const {
+  MeasuredForces m = *this;
+  const double b = width_mm.value_or(assumed_width_mm);
+  for (double* force : {&m.fc_N, &m.fc_min_N, &m.fc_max_N, &m.ff_N, &m.ff_min_N, &m.ff_max_N}) *force /= b;
+  return m;
 }
 
 std::string force_condition_id(const MeasuredForces& m) {

@@ -44,13 +44,18 @@ struct MeasuredForces {
   // The tool's angles, where the file gives them (columns rake_deg, clearance_deg); none: the preset's 0° / 11°,
   // stated as assumptions in the case.
   std::optional<double> rake_deg, clearance_deg;
+  // The width of cut of the tests, mm (column width_mm); none: not in the file, and a study assumes one.
+  std::optional<double> width_mm;
   int n_tests = 0;
   std::string status;
+
+  // The forces per mm of width: divided by the file's width, or by `assumed_width_mm` where it gives none.
+  MeasuredForces per_mm_of_width(double assumed_width_mm) const;
 };
 
 // The columns a force file must have (calibration measurements: the same columns); min/max, n_tests,
-// status, chip_thickness_um, rake_deg and clearance_deg are optional (min = max = mean, n = 1, "ok", none, the
-// preset's angles when absent).
+// status, chip_thickness_um, rake_deg, clearance_deg and width_mm are optional (min = max = mean, n = 1, "ok", none,
+// the preset's angles, an assumed width when absent).
 const std::vector<std::string>& required_force_columns();
 std::vector<MeasuredForces> read_measured_forces(const DataFile& file);
 

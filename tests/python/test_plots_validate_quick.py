@@ -219,12 +219,12 @@ def check_measurements(binary, scratch):
     reach the case files, the report names the file; bad files exit 2 naming file, line and column."""
     data = os.path.join(scratch, "my_forces.csv")
     with open(data, "w") as f:
-        f.write("# my tests, forces per mm of width\n"
-                "h_mm,vc_m_per_min,Fc_mean_N,Ff_mean_N,edge_radius_um,rake_deg,clearance_deg\n"
-                "0.05,120,110,60,20,15,7\n"
-                "0.05,120,130,80,20,-6,7\n"
-                "0.05,240,100,55,20,15,7\n"
-                "0.05,240,125,75,20,-6,7\n")
+        f.write("# my tests on 2 mm wide discs\n"
+                "h_mm,vc_m_per_min,Fc_mean_N,Ff_mean_N,edge_radius_um,rake_deg,clearance_deg,width_mm\n"
+                "0.05,120,220,120,20,15,7,2\n"
+                "0.05,120,260,160,20,-6,7,2\n"
+                "0.05,240,200,110,20,15,7,2\n"
+                "0.05,240,250,150,20,-6,7,2\n")
     mine = os.path.join(scratch, "measurements")
     ids = listed(validate(binary, "--list", "--measurements", data, "--out", mine))
     want = ["forces_h0.05mm_vc120mpmin_rake15deg_clearance7deg", "forces_h0.05mm_vc120mpmin_rake-6deg_clearance7deg",
@@ -242,12 +242,14 @@ def check_measurements(binary, scratch):
         fail(f"speed trends with two tools: {trends}")
     with open(os.path.join(mine, "validation.md")) as f:
         md = f.read()
-    for text in ("Data: " + data, "rake 15°", "clearance 7°", "# Validation against the measurements of " + data):
+    for text in ("Data: " + data, "rake 15°", "clearance 7°", "# Validation against the measurements of " + data,
+                 "divided by each row's width_mm", "N/mm (b of the data file)"):
         if text not in md:
             fail(f"validation.md with --measurements does not say '{text}'")
     if "Sutter" in md or "Klippel condition means" in md:
         fail("validation.md with --measurements still carries the built-in data's notes")
     rows = [r for r in read_csv(os.path.join(mine, "validation.csv")) if r["quantity"] == "Fc"]
+    # 220 N on a 2 mm wide cut: 110 N/mm.
     if len(rows) != 4 or float(rows[0]["measured_mean"]) != 110.0 or data not in rows[0]["source"]:
         fail(f"validation.csv with --measurements: {rows}")
     for text, words in (("0.05,120,110,60,20\n", ["my_bad.csv:1", "missing column(s) 'edge_radius_um'"]),

@@ -188,6 +188,18 @@ TEST(MeasuredForces, ToolAnglesOfARowReachItsIdAndCaseFile) {
   const std::string without = condition_case_text(force_condition(rows[2]), settings);
   EXPECT_NE(without.find("rake_angle_deg = 0.0       # ASSUMPTION: not in the data file\n"), std::string::npos);
 
+  // A row's width of cut turns its forces into N/mm; without one the study's assumed width does.
+  const DataFile wide = read_data_file("h_mm,vc_m_per_min,Fc_mean_N,Ff_mean_N,Fc_max_N,edge_radius_um,width_mm\n"
+                                       "0.1,100,600,360,630,30,3\n0.1,150,200,120,,30,\n",
+                                       "wide.csv");
+  const std::vector<MeasuredForces> w = read_measured_forces(wide);
+  EXPECT_DOUBLE_EQ(w[0].per_mm_of_width(1.0).fc_N, 200.0);
+  EXPECT_DOUBLE_EQ(w[0].per_mm_of_width(1.0).ff_N, 120.0);
+  EXPECT_DOUBLE_EQ(w[0].per_mm_of_width(1.0).fc_max_N, 210.0);
+  EXPECT_DOUBLE_EQ(w[0].per_mm_of_width(1.0).fc_min_N, 200.0);  // no minimum given: the mean
+  EXPECT_DOUBLE_EQ(w[1].per_mm_of_width(2.0).fc_N, 100.0);
+  EXPECT_FALSE(w[1].width_mm.has_value());
+
   for (const auto& [cells, what] : {std::pair{"45,7", "column 'rake_deg': must be in (-45, 45) degrees, got 45"},
                                     std::pair{"5,0", "column 'clearance_deg': must be in (0, 45) degrees, got 0"}}) {
     const DataFile bad = read_data_file(
