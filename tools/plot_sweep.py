@@ -3,7 +3,8 @@
 usage: /usr/bin/python3 plot_sweep.py SWEEP_DIR
 
 Writes into SWEEP_DIR (docs/results.md):
-  forces_vs_speed.png  mean cutting (solid) and thrust (dashed) force per unit width vs cutting speed, one colour per feed;
+  forces_vs_speed.png  mean cutting (solid) and thrust (dashed) force per unit width vs cutting speed, one colour per feed
+                       (and per value of the key a `sweep --vary` varied: sweep.csv column series, as below);
   chip_vs_speed.png    segment pitch (µm) and segmentation degree vs cutting speed, one colour per feed
                        (panels say so when the chip analysis gave no values);
   chip_map.png         speed x feed map of the chip type, coloured cells with labels;
@@ -39,10 +40,19 @@ def chip_color(label):
     return "#d0d0d0" if not low else "#9b8ec4"
 
 
-def group_by_feed(rows):
-    feeds = sorted({ps.to_float(r["feed_mm"]) for r in rows if ps.to_float(r["feed_mm"]) is not None})
-    return feeds, {f: sorted([r for r in rows if ps.to_float(r["feed_mm"]) == f],
-                             key=lambda r: ps.to_float(r["speed_m_per_s"])) for f in feeds}
+def series_of(row):
+    """A case's series: its feed and, in a sweep with --vary, the varied key's value (sweep.csv column series)."""
+    return row.get("series") or f"h = {ps.to_float(row['feed_mm']):g} mm"
+
+
+def group_by_series(rows):
+    """The series in the order of increasing feed, then of sweep.csv (the order of the --vary values)."""
+    order = {}
+    for r in rows:
+        order.setdefault(series_of(r), (ps.to_float(r["feed_mm"]) or 0.0, len(order)))
+    series = sorted(order, key=lambda s: order[s])
+    return series, {s: sorted([r for r in rows if series_of(r) == s], key=lambda r: ps.to_float(r["speed_m_per_s"]))
+                    for s in series}
 
 
 def speed_axis(ax, speeds):
@@ -59,6 +69,7 @@ def speed_axis(ax, speeds):
 
 
 def plot_forces(d, rows, feeds, by_feed, speeds):
+    """feeds: the series labels (feed, and the varied key's value); by_feed: their rows."""
     fig, ax = plt.subplots(figsize=(5.6, 3.8))
     any_point = False
     for k, f in enumerate(feeds):
@@ -69,18 +80,18 @@ def plot_forces(d, rows, feeds, by_feed, speeds):
         ft = [ps.to_float(r["mean_thrust_force_N_per_mm"]) for r in ok]
         if v:
             any_point = True
-            ax.plot(v, fc, "-o", color=color, lw=1.6, ms=4.5, label=f"$F_c$, h = {f:g} mm")
-            ax.plot(v, ft, "--s", color=color, lw=1.2, ms=4, mfc="white", label=f"$F_t$, h = {f:g} mm")
+            ax.plot(v, fc, "-o", color=color, lw=1.6, ms=4.5, label=f"$F_c$, {f}")
+            ax.plot(v, ft, "--s", color=color, lw=1.2, ms=4, mfc="white", label=f"$F_t$, {f}")
         bad = [ps.to_float(r["speed_m_per_s"]) for r in by_feed[f] if r["status"] != "complete"]
         if bad:
-            ax.plot(bad, [0] * len(bad), "x", color=color, ms=7, mew=1.5, label=f"not complete, h = {f:g} mm")
+            ax.plot(bad, [0] * len(bad), "x", color=color, ms=7, mew=1.5, label=f"not complete, {f}")
     fallback = any("last half" in (r.get("force_window") or "") for r in rows)
     speed_axis(ax, speeds)
     ax.set_ylabel("Mean force per unit width (N/mm)")
     ax.set_ylim(bottom=0)
     ax.set_title("Cutting (solid) and thrust (dashed) force vs cutting speed", pad=24)
     if any_point:
-        ax.legend(frameon=False, fontsize=7, ncol=2, loc="best")
+        ax.legend(frameon=False, fontsize=7, ncol=1 if max(len(f) for f in feeds) > 16 else 2, loc="best")
     else:
         ax.text(0.5, 0.5, "no complete case with forces", transform=ax.transAxes, ha="center", color="0.4")
     if fallback:
@@ -100,7 +111,7 @@ def plot_chip_metrics(d, rows, feeds, by_feed, speeds):
             pts = [(v, y) for v, y in pts if y is not None]
             if pts:
                 n += len(pts)
-                ax.plot(*zip(*pts), "-o", color=color, lw=1.5, ms=4.5, label=f"h = {f:g} mm")
+                ax.plot(*zip(*pts), "-o", color=color, lw=1.5, ms=4.5, label=f)
         if len(speeds) == 1 or not n:
             ax.set_xlim(min(speeds) * 0.8, max(speeds) * 1.2)
         speed_axis(ax, speeds)
@@ -121,7 +132,7 @@ def plot_chip_map(d, rows, feeds, speeds):
     fig, ax = plt.subplots(figsize=(max(4.0, 1.05 * len(speeds) + 1.6), max(2.2, 0.75 * len(feeds) + 1.3)))
     used = {}
     for r in rows:
-        v, f = ps.to_float(r["speed_m_per_s"]), ps.to_float(r["feed_mm"])
+        v, f = ps.to_float(r["speed_m_per_s"]), series_of(r)
         if v not in speeds or f not in feeds:
             continue
         i, j = speeds.index(v), feeds.index(f)
@@ -139,9 +150,11 @@ def plot_chip_map(d, rows, feeds, speeds):
     ax.set_xticks(np.arange(len(speeds)) + 0.5)
     ax.set_xticklabels([f"{v:g}\n({v * 60:g})" for v in speeds], fontsize=7.5)
     ax.set_yticks(np.arange(len(feeds)) + 0.5)
-    ax.set_yticklabels([f"{f:g}" for f in feeds])
+    varied = any(r.get("series") and r["series"] != f"h = {ps.to_float(r['feed_mm']):g} mm" for r in rows)
+    ax.set_yticklabels(feeds if varied else [f.removeprefix("h = ").removesuffix(" mm") for f in feeds],
+                       fontsize=7 if varied else None)
     ax.set_xlabel("Cutting speed V, m/s (m/min)")
-    ax.set_ylabel("Uncut chip thickness h (mm)")
+    ax.set_ylabel("" if varied else "Uncut chip thickness h (mm)")
     ax.tick_params(length=0, top=False, right=False)
     ax.set_title("Chip type")
     if "n/a" in used:
@@ -155,7 +168,7 @@ def plot_chip_map(d, rows, feeds, speeds):
 def plot_chip_gallery(d, rows, feeds, speeds, key):
     """The last snapshot of every complete case side by side, one colour scale for all panels."""
     import plot_result as pr
-    by_cell = {(ps.to_float(r["speed_m_per_s"]), ps.to_float(r["feed_mm"])): r for r in rows}
+    by_cell = {(ps.to_float(r["speed_m_per_s"]), series_of(r)): r for r in rows}
     fig, axes = plt.subplots(len(feeds), len(speeds), figsize=(2.5 * len(speeds) + 0.8, 2.3 * len(feeds) + 0.5),
                              squeeze=False, layout="constrained")
     drawn = []  # (collection, values, material)
@@ -166,7 +179,7 @@ def plot_chip_gallery(d, rows, feeds, speeds, key):
             entries = pr.read_pvd(os.path.join(d, r["case"])) if r and r["status"] == "complete" else []
             if not entries:
                 ax.axis("off")
-                ax.text(0.5, 0.5, f"{v:g} m/s, h = {f:g} mm\n{r['status'] if r else 'not run'}", ha="center",
+                ax.text(0.5, 0.5, f"{v:g} m/s, {f}\n{r['status'] if r else 'not run'}", ha="center",
                         va="center", transform=ax.transAxes, fontsize=8)
                 continue
             case_dir = os.path.join(d, r["case"])
@@ -177,7 +190,7 @@ def plot_chip_gallery(d, rows, feeds, speeds, key):
             coll, values = pr.draw_field(ax, fig, key, mesh, tool, time_s, window, process, material, 1e6,
                                          colorbar=False)
             drawn.append((coll, values, material))
-            ax.set_title(f"{v:g} m/s ({v * 60:g} m/min), h = {f:g} mm\n{r.get('chip_classification') or 'n/a'}",
+            ax.set_title(f"{v:g} m/s ({v * 60:g} m/min), {f}\n{r.get('chip_classification') or 'n/a'}",
                          fontsize=7.5)
     if not drawn:
         plt.close(fig)
@@ -204,7 +217,7 @@ def main(argv):
         print("error: sweep.csv has no rows", file=sys.stderr)
         return 1
     ps.apply_style()
-    feeds, by_feed = group_by_feed(rows)
+    feeds, by_feed = group_by_series(rows)
     speeds = sorted({ps.to_float(r["speed_m_per_s"]) for r in rows})
     plot_forces(d, rows, feeds, by_feed, speeds)
     plot_chip_metrics(d, rows, feeds, by_feed, speeds)

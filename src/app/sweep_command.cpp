@@ -1,5 +1,7 @@
 #include "app/sweep_command.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <iostream>
@@ -15,8 +17,10 @@
 #include "studies/grid_convergence_report.hpp"
 #include "studies/task_farm.hpp"
 #include "run/case_loading.hpp"
+#include "run/run_options.hpp"
 #include "run/run_summary.hpp"
 #include "io/atomic_file.hpp"
+#include "io/input_error.hpp"
 
 namespace mpmcut {
 
@@ -40,8 +44,42 @@ struct SweepOptions {
   int threads = 1;
   std::string out_dir;
   std::vector<std::string> overrides;
+  std::string vary;  // --vary KEY=V1,V2,...: one more grid dimension over any key --set takes; empty: none
   bool no_plots = false;
 };
+
+// --vary KEY=V1,V2,...: the key and its values (texts as given, each becomes `--set KEY=value`).
+struct VariedKey {
+  std::string key;
+  std::vector<std::string> values;  // {""}: nothing varied
+};
+
+VariedKey parse_vary(const std::string& text) {
+  if (text.empty()) return {"", {""}};
+  const auto eq = text.find('=');
+  if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
+    throw InputError(fmt::format("--vary '{}': expected KEY=V1,V2,... (a key as for --set, e.g. "
+                                 "cutting.rake_angle_deg=-5,0,10)",
+                                 text));
+  VariedKey v{text.substr(0, eq), {}};
+  std::stringstream values(text.substr(eq + 1));
+  for (std::string value; std::getline(values, value, ',');) {
+    if (value.empty()) throw InputError(fmt::format("--vary '{}': an empty value", text));
+    if (std::find(v.values.begin(), v.values.end(), value) != v.values.end())
+      throw InputError(fmt::format("--vary '{}': the value {} is given twice", text, value));
+    v.values.push_back(value);
+  }
+  return v;
+}
+
+// A name part for a case directory: the key's last part and the value, e.g. "rake_angle_deg-5".
+std::string varied_name(const VariedKey& v, const std::string& value) {
+  if (v.key.empty()) return "";
+  std::string name = "_" + v.key.substr(v.key.rfind('.') + 1) + value;
+  for (char& ch : name)
+    if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '-' && ch != '.' && ch != '_' && ch != '+') ch = '_';
+  return name;
+}
 
 // "yes" when two runs have the same chip type, else the change, marked where either sits at a threshold
 // of the classification (chip_analysis.hpp: a flip there says little about convergence).
@@ -58,6 +96,23 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
   }
   const fs::path out = o.out_dir.empty() ? fs::path("results") / ("sweep_" + fs::path(o.case_file).stem().string())
                                          : fs::path(o.out_dir);
+  const VariedKey varied = parse_vary(o.vary);
+  // The grid-convergence report groups runs by speed and feed only.
+  if (!varied.key.empty() && o.cells_per_feed.size() > 1)
+    throw InputError("--vary and a resolution study (--cells-per-feed with two or more values) do not combine: run one "
+                     "convergence sweep per value (--set " + varied.key + "=...)");
+  // Every value of the varied key must make a valid case: checked before anything runs (file, key, allowed range).
+  if (!varied.key.empty())
+    for (const std::string& value : varied.values) {
+      std::vector<std::string> with = o.overrides;
+      with.push_back(varied.key + "=" + value);
+      try {
+        (void)load_case(o.case_file, with);
+      } catch (const InputError& e) {
+        throw InputError(fmt::format("--vary {}: the value {} makes a case that does not read: {}", varied.key, value,
+                                     e.what()));
+      }
+    }
   std::vector<double> feeds_m = o.feeds_m;
   if (feeds_m.empty()) {  // the case's own feed (load_case also checks the case before anything runs)
     const Case c = load_case(o.case_file, o.overrides);
@@ -73,16 +128,23 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
   struct Case {
     double speed, feed;
     int cells_per_feed;  // 0: the case's own cell size
+    std::string value;   // of the varied key ("" when none is varied)
     fs::path dir;
+  };
+  // The plots' series: one per feed and value of the varied key.
+  const auto series_of = [&](const Case& c) {
+    return fmt::format("h = {:g} mm", c.feed * 1e3) + (varied.key.empty() ? "" : ", " + varied.key + " = " + c.value);
   };
   std::vector<Case> cases;
   std::vector<ChildRun> runs;
   const std::vector<int> resolutions = o.cells_per_feed.empty() ? std::vector<int>{0} : o.cells_per_feed;
   for (int n : resolutions)
     for (double h : feeds_m)
+      for (const std::string& value : varied.values)
       for (double v : o.speeds_m_per_s) {
-        const std::string name = fmt::format("v{:g}mps_h{:g}mm", v, h * 1e3) + (n > 0 ? fmt::format("_n{}", n) : "");
-        cases.push_back({v, h, n, out / name});
+        const std::string name = fmt::format("v{:g}mps_h{:g}mm", v, h * 1e3) + (n > 0 ? fmt::format("_n{}", n) : "") +
+                                 varied_name(varied, value);
+        cases.push_back({v, h, n, value, out / name});
         ChildRun run;
         run.name = name;
         // --keep-complete: a rerun of the sweep keeps the cases already complete and resumes interrupted ones.
@@ -93,13 +155,16 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
         run.args.insert(run.args.end(), {"--set", fmt::format("cutting.cutting_speed={}", v), "--set",
                                          fmt::format("cutting.uncut_chip_thickness={}", h)});
         if (n > 0) run.args.insert(run.args.end(), {"--set", fmt::format("cutting.cell_size={}", h / n)});
+        if (!varied.key.empty()) run.args.insert(run.args.end(), {"--set", varied.key + "=" + value});
         run.log_file = out / "logs" / (name + ".log");
         runs.push_back(run);
       }
-  std::cout << fmt::format("mpmcut sweep: {} cases ({} speeds x {} feeds x {} resolutions) from {}, {}, each with "
+  std::cout << fmt::format("mpmcut sweep: {} cases ({} speeds x {} feeds x {} resolutions{}) from {}, {}, each with "
                            "--threads {} (change with --jobs/--threads); results in {} (complete cases of an earlier "
                            "sweep there are kept)\n",
-                           runs.size(), o.speeds_m_per_s.size(), feeds_m.size(), resolutions.size(), o.case_file,
+                           runs.size(), o.speeds_m_per_s.size(), feeds_m.size(), resolutions.size(),
+                           varied.key.empty() ? "" : fmt::format(" x {} values of {}", varied.values.size(), varied.key),
+                           o.case_file,
                            concurrency_text(jobs),
                            o.threads, out.string())
             << std::flush;
@@ -137,14 +202,19 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
                    "segmentation_degree_min", "segmentation_degree_max", "pitch_um", "segmentation_frequency_kHz", "plastic_work_fraction",
                    "damage_fraction", "friction_fraction", "kinetic_elastic_fraction", "numerical_fraction",
                    "rake_friction_work_per_travel_N_per_mm", "edge_flank_friction_work_per_travel_N_per_mm",
-                   "rake_mean_slip_speed_m_per_s", "wall_time_s", "message"};
+                   "rake_mean_slip_speed_m_per_s", "wall_time_s", "message", "series"};
   table.headings = {"case", "V (m/s)", "V (m/min)", "h (mm)", "cell (µm)", "cells across h", "mass scaling",
                     "status", "Fc (N/mm)", "Ft (N/mm)", "force window", "t0/tc", "t0/tc by area", "T max (K)", "T shear zone (K)",
                     "T tool–chip (K)", "chip", "chip type confidence", "segmentation degree", "Gs mean over time", "Gs min", "Gs max",
                     "pitch (µm)", "frequency (kHz)",
                     "plastic / W", "damage / W", "friction / W", "kinetic+elastic / W", "numerical / W",
                     "rake friction work / travel (N/mm)", "edge+flank friction work / travel (N/mm)",
-                    "rake slip speed (m/s)", "wall (s)", "message"};
+                    "rake slip speed (m/s)", "wall (s)", "message", "series"};
+  // The varied key's value beside the feed, under the key's own name.
+  if (!varied.key.empty()) {
+    table.columns.insert(table.columns.begin() + 4, varied.key);
+    table.headings.insert(table.headings.begin() + 4, varied.key);
+  }
   int failed = 0;
   std::vector<CaseResult> results;
   for (std::size_t i = 0; i < cases.size(); ++i) {
@@ -174,7 +244,8 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
                           format_number(r.tool_force_split.edge_flank_friction_work_N_per_mm, 3),
                           format_number(r.tool_force_split.rake_slip_speed_m_per_s, 3),
                           format_number(r.wall_time_s ? r.wall_time_s : std::optional<double>(runs[i].wall_time_s), 3),
-                          r.message});
+                          r.message, series_of(cases[i])});
+    if (!varied.key.empty()) table.rows.back().insert(table.rows.back().begin() + 4, cases[i].value);
   }
   table.write_csv(out / "sweep.csv");
   write_file_atomically(out / "sweep.md", [&](std::ostream& s) {
@@ -195,10 +266,12 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
                       "chip_thickness_change", "pitch_change", "chip_type_same"};
       conv.headings = {"V (m/s)", "h (mm)", "cells across h", "ΔFc", "ΔFt", "Δ(t0/tc)", "Δpitch", "same chip type"};
       for (double h : feeds_m)
+        for (const std::string& value : varied.values)
         for (double v : o.speeds_m_per_s) {
           std::vector<std::size_t> idx;
           for (std::size_t i = 0; i < cases.size(); ++i)
-            if (cases[i].speed == v && cases[i].feed == h && results[i].status == "complete") idx.push_back(i);
+            if (cases[i].speed == v && cases[i].feed == h && cases[i].value == value && results[i].status == "complete")
+              idx.push_back(i);
           std::sort(idx.begin(), idx.end(), [&](auto a, auto b) { return cases[a].cells_per_feed < cases[b].cells_per_feed; });
           if (idx.size() < 2) continue;
           const CaseResult &a = results[idx[idx.size() - 2]], &b = results[idx.back()];
@@ -270,11 +343,18 @@ void add_sweep_command(CLI::App& app) {
   sweep->add_option("-t,--threads", o->threads, "OpenMP threads of each case (default: 1)")->check(CLI::Range(1, 1024));
   sweep->add_option("-o,--out", o->out_dir, "Sweep directory (default: results/sweep_<case name>)");
   sweep->add_option("-s,--set", o->overrides, "Override an input key of every case, as for run (repeatable)");
+  sweep->add_option("--vary", o->vary,
+                    "One more grid dimension: KEY=V1,V2,... over any key --set takes, e.g. "
+                    "cutting.rake_angle_deg=-5,0,10 or cutting.edge_radius=5e-6,20e-6 or cutting.friction=0.2,0.5; "
+                    "every value is checked before anything runs (docs/results.md)");
   sweep->add_flag("--no-plots", o->no_plots, "Only the tables");
   sweep->callback([o, &app]() {
     int code = 0;
     try {
       code = run_study([&] { return run_sweep(*o, app); });
+    } catch (const InputError& e) {  // a bad case, --set or --vary: before anything ran
+      std::cerr << "error: " << e.what() << "\n";
+      code = kExitInputError;
     } catch (const std::exception& e) {
       std::cerr << "error: " << e.what() << "\n";
       code = 4;

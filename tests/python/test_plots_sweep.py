@@ -9,6 +9,7 @@ the chip pictures (temperature, plastic strain, damage, combined) of the last sn
 non-trivial; the chip map gives continuous, serrated and discontinuous chips three different colours.
 """
 import csv
+import json
 import os
 import shutil
 import subprocess
@@ -96,7 +97,39 @@ def main(binary, scratch):
     if p.returncode == 0:
         fail("plot of a missing directory exited 0")
     check_chip_colours()
+    check_vary(binary, case, scratch)
     print("PASS")
+
+
+def check_vary(binary, case, scratch):
+    """sweep --vary: one more grid dimension over any key --set takes; each value reaches its runs (a larger rake
+    angle cuts with a smaller force), sweep.csv names the key and the series; a bad value exits 2 before any run."""
+    out = os.path.join(scratch, "vary")
+    p = subprocess.run([binary, "sweep", case, "--speeds", "20", "--vary", "cutting.rake_angle_deg=-5,15", "--jobs", "2",
+                        "--out", out, "--no-plots"], capture_output=True, text=True, timeout=300)
+    print(p.stdout, p.stderr, sep="\n")
+    if p.returncode != 0:
+        fail(f"sweep --vary exit status {p.returncode}")
+    with open(os.path.join(out, "sweep.csv"), newline="") as f:
+        rows = {r["case"]: r for r in csv.DictReader(f)}
+    want = {"v20mps_h0.1mm_rake_angle_deg-5": "-5", "v20mps_h0.1mm_rake_angle_deg15": "15"}
+    if {k: r["cutting.rake_angle_deg"] for k, r in rows.items()} != want:
+        fail(f"sweep --vary cases: {list(rows)}")
+    if len({r["series"] for r in rows.values()}) != 2:
+        fail("sweep --vary: the two values are not two series")
+    with open(os.path.join(out, "v20mps_h0.1mm_rake_angle_deg15", "summary.json")) as f:
+        if json.load(f)["cutting"]["rake_angle_deg"] != 15:
+            fail("the varied rake angle did not reach the run")
+    fc = {v: float(rows[k]["mean_cutting_force_N_per_mm"]) for k, v in want.items()}
+    if not fc["-5"] > fc["15"]:
+        fail(f"Fc at rake -5 deg ({fc['-5']}) should exceed Fc at rake 15 deg ({fc['15']})")
+    for args, words in ((["--vary", "cutting.rake_angle_deg=0,50"], ["--vary cutting.rake_angle_deg", "50", "(-45, 45)"]),
+                        (["--vary", "cutting.rake_angle_deg"], ["KEY=V1,V2"]),
+                        (["--vary", "cutting.friction=0.2,0.2"], ["given twice"])):
+        p = subprocess.run([binary, "sweep", case, "--speeds", "20", "--out", out + "_bad", *args], capture_output=True,
+                           text=True, timeout=60)
+        if p.returncode != 2 or not all(w in p.stderr for w in words) or os.path.exists(out + "_bad"):
+            fail(f"sweep {args}: exit {p.returncode}, expected 2 naming {words} before any run: {p.stderr}")
 
 
 def check_chip_over_time(case_dir, row):
