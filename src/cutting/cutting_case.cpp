@@ -23,6 +23,17 @@ MaterialParameters cutting_material(TableReader& top, TableReader& cutting, cons
   // The file's last set of that name, else the library's (find(): the latest definition wins).
   const MaterialParameters* m = library.find(name);
   if (m != nullptr) {
+    // An elastic workpiece cannot yield: no chip forms, the tool's work goes into friction and elastic waves (a
+    // coarse 20 m/s cut of elastic-steel: Fc 6100 N/mm, 21000 K at the contact), and every result would mislead.
+    if (m->model != MaterialModel::JohnsonCook) {
+      std::string plastic;
+      for (const auto& n : library.names())
+        if (const MaterialParameters* s = library.find(n); s && s->model == MaterialModel::JohnsonCook)
+          plastic += (plastic.empty() ? "" : ", ") + ("\"" + n + "\"");
+      cutting.fail("material", fmt::format("the set \"{}\" is elastic (model = \"elastic\"): a workpiece that cannot "
+                                           "yield forms no chip; cut a model = \"johnson_cook\" set: {}",
+                                           name, plastic));
+    }
     // The workpiece starts solid: at or above the melting point the flow stress is zero.
     cutting.check("initial_temperature", params.initial_temperature, temperature_range(*m));
     return *m;

@@ -562,6 +562,15 @@ rounding_radius = 0.05
   expect_same_scene(back, s);
 }
 
+// A cut of an elastic workpiece forms no chip (a coarse 20 m/s cut of elastic-steel ran to Fc 6100 N/mm and 21000 K):
+// the preset refuses it at the material key and names the sets that can be cut.
+TEST(SceneParser, CuttingAnElasticWorkpieceIsAnInputError) {
+  const std::string cut = "[cutting]\nmaterial = \"elastic-steel\"\ncutting_speed = 20.0\n"
+                          "uncut_chip_thickness = 0.1e-3\ncut_length = 0.1e-3\ncell_size = 20e-6\n";
+  expect_error(cut, "material =", {"cutting.material", "elastic-steel", "is elastic", "\"ti64-cutting\""});
+  EXPECT_EQ(error_of(cut).find("\"elastic-unit\""), std::string::npos) << "an elastic set offered for cutting";
+}
+
 // A speed set on the command line replaces the file's speed in either spelling (sweep --speeds on a
 // case written in m/min), and the other way round.
 TEST(SceneOverrides, CuttingSpeedReplacesTheOtherSpelling) {
