@@ -20,6 +20,7 @@
 
 #include "io/atomic_file.hpp"
 #include "run/run_summary.hpp"
+#include "studies/study_progress.hpp"
 
 namespace mpmcut {
 
@@ -139,6 +140,14 @@ std::string csv_cell(const std::string& s) {
 
 }  // namespace
 
+namespace {
+
+// A line on how far the running cases have got, this often: long enough not to flood the console of a sweep of
+// one-minute cases (which report as they end), short enough that an hour-long case is not silent.
+constexpr double kProgressReportIntervalS = 600.0;
+
+}  // namespace
+
 bool run_children(std::vector<ChildRun>& runs, int jobs, bool print_progress) {
   g_stop_signals = 0;
   struct sigaction action {}, old_int{}, old_term{};
@@ -150,6 +159,11 @@ bool run_children(std::vector<ChildRun>& runs, int jobs, bool print_progress) {
   const std::string exe = self_executable();
   using clock = std::chrono::steady_clock;
   std::map<pid_t, std::pair<std::size_t, clock::time_point>> running;
+  // Per running case: the study's wall time and the case's progress when its progress was first seen (for the
+  // estimate of what is left: a resumed case starts part-way).
+  std::map<pid_t, std::pair<double, double>> first_seen;
+  const clock::time_point study_start = clock::now();
+  clock::time_point last_report = study_start, last_sample = study_start;
   std::size_t next = 0, finished = 0;
   int forwarded = 0;
   jobs = std::max(1, jobs);
@@ -181,6 +195,7 @@ bool run_children(std::vector<ChildRun>& runs, int jobs, bool print_progress) {
         ++it;
         continue;
       }
+      first_seen.erase(it->first);
       ChildRun& run = runs[it->second.first];
       run.exit_code = r < 0 ? 127 : WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
       run.wall_time_s = std::chrono::duration<double>(clock::now() - it->second.second).count();
@@ -193,6 +208,36 @@ bool run_children(std::vector<ChildRun>& runs, int jobs, bool print_progress) {
       if (run.on_finished) run.on_finished(run);
       it = running.erase(it);
       reaped = true;
+    }
+    const clock::time_point now = clock::now();
+    // The first progress of each case is sampled early (once a minute until it shows), so that the first report
+    // can already say what is left.
+    if (print_progress && std::chrono::duration<double>(now - last_sample).count() >= 60.0) {
+      last_sample = now;
+      const double study_s = std::chrono::duration<double>(now - study_start).count();
+      for (const auto& [pid, info] : running)
+        if (!first_seen.contains(pid))
+          if (const auto f = run_fraction_done(result_dir_of_args(runs[info.first].args)))
+            first_seen.emplace(pid, std::pair{study_s, *f});
+    }
+    if (print_progress && !running.empty() &&
+        std::chrono::duration<double>(now - last_report).count() >= kProgressReportIntervalS) {
+      last_report = now;
+      const double study_s = std::chrono::duration<double>(now - study_start).count();
+      std::vector<RunningCase> cases;
+      for (const auto& [pid, info] : running) {
+        RunningCase c;
+        c.name = runs[info.first].name;
+        c.wall_s = std::chrono::duration<double>(now - info.second).count();
+        c.fraction = run_fraction_done(result_dir_of_args(runs[info.first].args));
+        if (c.fraction) {
+          const auto [seen_s, seen_fraction] = first_seen.try_emplace(pid, study_s, *c.fraction).first->second;
+          if (*c.fraction > seen_fraction && study_s > seen_s)
+            c.remaining_s = (1.0 - *c.fraction) * (study_s - seen_s) / (*c.fraction - seen_fraction);
+        }
+        cases.push_back(c);
+      }
+      std::cout << progress_report_line(cases) << "\n" << std::flush;
     }
     if (!reaped) std::this_thread::sleep_for(std::chrono::milliseconds(50));
   }

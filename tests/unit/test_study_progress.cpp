@@ -1,0 +1,56 @@
+// The progress line of a study's running cases (studies/study_progress.hpp): how far a run is from its files, and
+// the line itself.
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include "studies/study_progress.hpp"
+
+namespace mpmcut {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("mpmcut_test_study_progress_" + std::to_string(::getpid())) / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+TEST(StudyProgress, FractionDoneIsTheLastHistoryTimeOverTheEndTime) {
+  const fs::path dir = fresh_dir("running");
+  EXPECT_FALSE(run_fraction_done(dir));  // nothing written yet
+  std::ofstream(dir / "summary.json") << R"({"status": "running", "end_time_s": 4e-05, "steps": 0})";
+  EXPECT_FALSE(run_fraction_done(dir));  // no history yet
+  std::ofstream(dir / "history.csv") << "time_s,step,dt_s\n";
+  EXPECT_FALSE(run_fraction_done(dir));  // the header only
+  {
+    std::ofstream h(dir / "history.csv", std::ios::app);
+    for (int i = 1; i <= 5000; ++i) h << i * 2e-9 << "," << i << ",2e-09\n";  // more than the 8 kB tail read
+    h << "1.0e-05,50";                                                          // a row being written: not counted
+  }
+  ASSERT_TRUE(run_fraction_done(dir));
+  EXPECT_NEAR(*run_fraction_done(dir), 1e-5 / 4e-5, 1e-12);
+  std::ofstream(dir / "summary.json") << R"({"status": "running", "end_time_s": 0)";  // half-written
+  EXPECT_FALSE(run_fraction_done(dir));
+}
+
+TEST(StudyProgress, ResultDirectoryComesFromTheOutArgument) {
+  EXPECT_EQ(result_dir_of_args({"run", "case.toml", "--out", "results/a", "--keep-complete"}), fs::path("results/a"));
+  EXPECT_EQ(result_dir_of_args({"run", "case.toml", "-o", "b"}), fs::path("b"));
+  EXPECT_EQ(result_dir_of_args({"analyze", "dir"}), fs::path());
+}
+
+TEST(StudyProgress, LineNamesEachCaseWithItsShareTimeAndWhatIsLeft) {
+  const std::string line = progress_report_line(
+      {{"v20mps_h0.1mm", 2040.0, 0.62, 1260.0}, {"v50mps_h0.1mm", 45.0, std::nullopt, std::nullopt}});
+  EXPECT_EQ(line, "running: v20mps_h0.1mm 62 % (34 min, ~21 min left), v50mps_h0.1mm (45 s)");
+  EXPECT_EQ(progress_report_line({{"long", 7200.0, 0.5, 7200.0}}), "running: long 50 % (2.0 h, ~2.0 h left)");
+}
+
+}  // namespace
+}  // namespace mpmcut
