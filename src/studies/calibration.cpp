@@ -469,7 +469,7 @@ void Calibrator::write_results(const Evaluation& best, const std::vector<Conditi
                                                          sequence_.size(), resolution);
     s << "## Errors at the best set: training and held back\n\n" << table.markdown() << "\n";
     s << "Error % = (simulated − measured) / measured; measured N/mm = measured N / b with b the row's width_mm "
-      << "where the data file gives it, else " << c_.width_of_cut_mm << " mm ASSUMED.\n\n";
+      << "where the data file gives it, else b = " << c_.width_of_cut_mm << " mm ASSUMED.\n\n";
     s << "Data: " << c_.measurements_source << ".\n\n";
     s << "## Files\n\nbest_material.toml (the set, with its provenance), evaluations.csv (every evaluation: "
          "parameters, per-condition forces, objective), calibration_best.csv (this table), convergence.png, "
