@@ -101,6 +101,12 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
   if (!varied.key.empty() && o.cells_per_feed.size() > 1)
     throw InputError("--vary and a resolution study (--cells-per-feed with two or more values) do not combine: run one "
                      "convergence sweep per value (--set " + varied.key + "=...)");
+  // The grid's own keys have their own options (the grid's --set would be overridden by --vary's).
+  for (const char* own : {"cutting.cutting_speed", "cutting.cutting_speed_m_per_min", "cutting.uncut_chip_thickness"})
+    if (varied.key == own)
+      throw InputError(fmt::format("--vary {}: the sweep's grid sets it; use --speeds (m/s) or --feeds (m)", own));
+  if (varied.key == "cutting.cell_size" && !o.cells_per_feed.empty())
+    throw InputError("--vary cutting.cell_size with --cells-per-feed: give the resolution one way");
   // Every value of the varied key must make a valid case: checked before anything runs (file, key, allowed range).
   if (!varied.key.empty())
     for (const std::string& value : varied.values) {

@@ -65,7 +65,7 @@ double num(const std::map<std::string, std::string>& row, const std::string& key
 
 // One condition of the matrix: what the run is for, which measurement it is compared with, and its result.
 struct Condition : CuttingCondition {
-  std::optional<MeasuredForces> measured;   // force conditions
+  std::optional<MeasuredForces> measured;   // force conditions; forces per mm of width (MeasuredForces::per_mm_of_width)
   std::map<std::string, std::string> chip;  // the ti64_chip_morphology.csv row for chip conditions
   std::string case_text;
   bool selected = false;                    // run by this invocation

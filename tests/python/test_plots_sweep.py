@@ -125,7 +125,8 @@ def check_vary(binary, case, scratch):
         fail(f"Fc at rake -5 deg ({fc['-5']}) should exceed Fc at rake 15 deg ({fc['15']})")
     for args, words in ((["--vary", "cutting.rake_angle_deg=0,50"], ["--vary cutting.rake_angle_deg", "50", "(-45, 45)"]),
                         (["--vary", "cutting.rake_angle_deg"], ["KEY=V1,V2"]),
-                        (["--vary", "cutting.friction=0.2,0.2"], ["given twice"])):
+                        (["--vary", "cutting.friction=0.2,0.2"], ["given twice"]),
+                        (["--vary", "cutting.cutting_speed=10,20"], ["--speeds"])):
         p = subprocess.run([binary, "sweep", case, "--speeds", "20", "--out", out + "_bad", *args], capture_output=True,
                            text=True, timeout=60)
         if p.returncode != 2 or not all(w in p.stderr for w in words) or os.path.exists(out + "_bad"):
