@@ -138,10 +138,6 @@ std::string csv_cell(const std::string& s) {
   return q + "\"";
 }
 
-}  // namespace
-
-namespace {
-
 // A line on how far the running cases have got, this often: long enough not to flood the console of a sweep of
 // one-minute cases (which report as they end), short enough that an hour-long case is not silent.
 constexpr double kProgressReportIntervalS = 600.0;
