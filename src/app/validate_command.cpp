@@ -330,12 +330,16 @@ std::string resolution_text(const ValidateOptions& o) {
   return fmt::format(
       "cell = min(t0/N, r_n/M) with N = {} cells across the uncut chip thickness t0 (--cells-per-feed) and M = {:g} "
       "cells across the measured edge radius r_n (--cells-per-edge-radius; force conditions){}, 2×2 particles per "
-      "cell; chip-type conditions at t0/{} (the least the chip analysis needs to resolve segments; their 5 µm edge is "
-      "the preset's, not measured, and sets no limit). Tool travel 6·max(t0, r_n) (the steady window, after "
+      "cell{}. Tool travel 6·max(t0, r_n) (the steady window, after "
       "max(40 % of the cut, 3 t0), is then at least 3 t0 long); workpiece height t0 + max(3 t0, 2 r_n), rounded up "
       "by the preset so that the machined surface lies on a row of grid nodes (docs/cutting.md, \"Grid phase of the "
       "tool tip\")",
-      o.cells_per_feed, o.cells_per_edge_radius, thermal, chip_cells_per_feed(o.cells_per_feed));
+      o.cells_per_feed, o.cells_per_edge_radius, thermal,
+      o.measurements.empty()  // with a user's file there are no chip-type conditions
+          ? fmt::format("; chip-type conditions at t0/{} (the least the chip analysis needs to resolve segments; their "
+                        "5 µm edge is the preset's, not measured, and sets no limit)",
+                        chip_cells_per_feed(o.cells_per_feed))
+          : std::string());
 }
 
 // --list: the selected conditions with their resolution and estimated cost; writes their case files.
