@@ -144,6 +144,7 @@ CuttingCondition force_condition(const MeasuredForces& m) {
   c.edge_radius_um = m.edge_radius_um;
   c.rake_deg = m.rake_deg;
   c.clearance_deg = m.clearance_deg;
+  c.width_mm = m.width_mm;
   return c;
 }
 
@@ -228,7 +229,10 @@ std::string condition_case_text(const CuttingCondition& c, const ConditionRunSet
   s += fmt::format("material = \"{}\"  # {}\n", material, o.material_note);
   s += fmt::format("cutting_speed = {}\n", c.speed_m_per_s);
   s += fmt::format("uncut_chip_thickness = {}\n", h);
-  s += "width_of_cut = 1e-3  # ASSUMPTION b = 1 mm: the width of cut is not in the Klippel data file\n";
+  s += c.width_mm ? fmt::format("width_of_cut = 1e-3  # per mm: the measured forces are divided by the tests' width "
+                                "b = {:g} mm\n",
+                                *c.width_mm)
+                  : "width_of_cut = 1e-3  # ASSUMPTION b = 1 mm: the width of cut is not in the Klippel data file\n";
   // Without the angles in the measurements, the text of the runs made before they could be given (records match).
   s += c.rake_deg ? fmt::format("rake_angle_deg = {}  # from the measurements\n", *c.rake_deg)
                   : "rake_angle_deg = 0.0       # ASSUMPTION: not in the data file\n";

@@ -67,6 +67,7 @@ struct CuttingCondition {
   double h_mm = 0;
   double edge_radius_um = 0;  // measured r_n for force conditions; the preset's 5 um where the source gives none
   std::optional<double> rake_deg, clearance_deg;  // from the measurements; none: the preset's (an assumption)
+  std::optional<double> width_mm;  // the tests' width of cut, for the case's note (the run itself is 1 mm wide)
 };
 
 // The id (result directory name) of a force condition: forces_h<h>mm_vc<v>mpmin, with _rake<r>deg and

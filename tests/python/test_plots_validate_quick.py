@@ -233,6 +233,9 @@ def check_measurements(binary, scratch):
         fail(f"--measurements --list: {ids}, expected {want}")
     if case_value(os.path.join(mine, "cases", want[1] + ".toml"), "rake_angle_deg") != -6.0:
         fail("the row's rake angle did not reach its case file")
+    with open(os.path.join(mine, "cases", want[1] + ".toml")) as f:
+        if "divided by the tests' width b = 2 mm" not in f.read():
+            fail("the case file does not say that the forces are divided by the tests' width")
     validate(binary, "--quick", "--no-plots", "--conditions", want[0], "--measurements", data, "--out", mine)
     validate(binary, "--quick", "--no-plots", "--measurements", data, "--out", mine)  # without a selection: all rows
     # One speed trend per tool, not one over both tools at h = 0.05 mm.
