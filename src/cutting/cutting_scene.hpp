@@ -23,8 +23,8 @@ double machined_surface_on_node_row(double workpiece_height, double uncut_chip_t
 
 // The tool travel after which the chip is taken as formed (start of the steady window), m.
 double steady_window_start_travel(const CuttingParameters& c);
-// A warning when the cut is too short for its force window to start after the chip has formed (cut_length below
-// kEntryTravelT0 t0 / 0.6): the means are then those of the entry transient. Empty otherwise.
+// A warning when less than half of the force window lies after the chip has formed (kEntryTravelT0 t0 of travel;
+// cut_length below 3.75 t0 with the default window): the means are then mostly the entry transient's. Empty otherwise.
 std::string steady_window_warning(const CuttingParameters& c);
 
 }  // namespace mpmcut

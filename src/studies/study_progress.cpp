@@ -6,7 +6,8 @@
 #include <sstream>
 
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
+
+#include "run/run_summary.hpp"
 
 namespace mpmcut {
 
@@ -46,12 +47,8 @@ std::string minutes_text(double s) {
 std::optional<double> run_fraction_done(const fs::path& dir) {
   double end_time = 0.0;
   try {
-    std::ifstream in(dir / "summary.json");
-    if (!in) return std::nullopt;
-    const nlohmann::json j = nlohmann::json::parse(in);
-    if (!j.contains("end_time_s") || !j["end_time_s"].is_number()) return std::nullopt;
-    end_time = j["end_time_s"].get<double>();
-  } catch (const std::exception&) {  // being rewritten at this moment
+    end_time = read_summary(dir / "summary.json").end_time_s;
+  } catch (const std::exception&) {  // not written yet, or being rewritten at this moment
     return std::nullopt;
   }
   const std::optional<double> t = last_row_first_number(dir / "history.csv");
