@@ -1,0 +1,239 @@
+#include "app/validation_conditions.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "app/plot_command.hpp"
+#include "cutting/cutting_resolution.hpp"
+#include "io/input_error.hpp"
+#include "io/material_library.hpp"
+
+namespace mpmcut::validation {
+
+namespace {
+
+constexpr const char* kForcesFile = "data/experiments/ti64_klippel2024_orthogonal_forces.csv";
+constexpr const char* kChipFile = "data/experiments/ti64_chip_morphology.csv";
+constexpr const char* kForcesSource =
+    "Klippel et al., Int. J. Adv. Manuf. Technol. 135 (2024) 2871-2908, per-test data file [V]";
+
+// --quick without a selection: a trend at one h (0.04 mm at 100 and 400.1 m/min), a thickness ratio
+// (0.04 / 0.1 mm at 100 m/min) and the chip-type conditions: every part of the report, in seconds.
+const std::vector<std::string>& quick_condition_ids() {
+  static const std::vector<std::string> ids{"forces_h0.04mm_vc100mpmin", "forces_h0.04mm_vc400.1mpmin",
+                                            "forces_h0.1mm_vc100mpmin", "chip_sutter_list_2013_low_v5mps",
+                                            "chip_sutter_list_2013_high_v75mps"};
+  return ids;
+}
+
+double num(const std::map<std::string, std::string>& row, const std::string& key) {
+  const auto it = row.find(key);
+  return it == row.end() || it->second.empty() ? NAN : std::strtod(it->second.c_str(), nullptr);
+}
+
+// The material of the runs: a library set, or a set of --material-file (read and checked here, so that a broken
+// file stops the study before any run, with its file, line and key).
+void choose_material(const Options& o, ConditionRunSettings& s) {
+  if (o.material_file.empty()) {
+    if (o.material.empty()) return;
+    if (!builtin_material_library().find(o.material))
+      throw InputError(fmt::format("--material {}: no such set; the library has: {}", o.material,
+                                   join(builtin_material_library().names(), ", ")));
+    s.material = o.material;
+    s.material_note = "chosen with --material; docs/materials.md";
+    return;
+  }
+  std::ifstream in(o.material_file, std::ios::binary);
+  if (!in) throw InputError(fmt::format("--material-file {}: cannot read the file", o.material_file));
+  std::ostringstream text;
+  text << in.rdbuf();
+  MaterialLibrary with_builtin = builtin_material_library();
+  const std::size_t before = with_builtin.sets().size();
+  with_builtin.add_file(text.str(), o.material_file);  // InputError at the file's line and key
+  if (with_builtin.sets().size() == before)
+    throw InputError(fmt::format("--material-file {}: no [[material]] set in the file", o.material_file));
+  std::vector<std::string> names;
+  for (std::size_t i = before; i < with_builtin.sets().size(); ++i) names.push_back(with_builtin.sets()[i].name);
+  std::string name = o.material;
+  if (name.empty() && names.size() == 1) name = names.front();
+  if (name.empty())
+    throw InputError(fmt::format("--material-file {} has {} sets ({}): name one with --material", o.material_file,
+                                 names.size(), join(names, ", ")));
+  if (!with_builtin.find(name))
+    throw InputError(fmt::format("--material {}: no such set in {} ({}) or the library ({})", name, o.material_file,
+                                 join(names, ", "), join(builtin_material_library().names(), ", ")));
+  s.material = name;
+  s.material_definitions = text.str();
+  s.material_note = fmt::format("from --material-file {}", o.material_file);
+}
+
+}  // namespace
+
+std::optional<double> Condition::cells_per_thermal_length(double kappa) const {
+  const double l_th = thermal_length_m(kappa, h_mm * 1e-3, speed_m_per_s);
+  return result.cell_size_um && l_th > 0.0 ? std::optional<double>(l_th / (*result.cell_size_um * 1e-6)) : std::nullopt;
+}
+
+ForceData force_data(const Options& o) {
+  if (o.measurements.empty())
+    return {read_data_file(embedded_tool_file(kForcesFile), kForcesFile), kForcesSource, true};
+  std::ifstream in(o.measurements, std::ios::binary);
+  if (!in) throw InputError(fmt::format("--measurements {}: cannot read the file", o.measurements));
+  std::stringstream text;
+  text << in.rdbuf();
+  return {read_data_file(text.str(), o.measurements), o.measurements + " (--measurements)", false};
+}
+
+std::string join(const std::vector<std::string>& parts, const std::string& sep) {
+  std::string out;
+  for (const auto& p : parts) out += (out.empty() ? "" : sep) + p;
+  return out;
+}
+
+ConditionRunSettings run_settings(const Options& o) {
+  ConditionRunSettings s;
+  s.quick = o.quick;
+  s.cells_per_feed = o.cells_per_feed;
+  s.cells_per_edge_radius = o.cells_per_edge_radius;
+  s.cells_per_thermal_length = o.cells_per_thermal_length;
+  choose_material(o, s);
+  for (const std::string& assignment : o.material_keys) {
+    const auto eq = assignment.find('=');
+    const std::string key = eq == std::string::npos ? std::string() : assignment.substr(0, eq);
+    const std::string text = eq == std::string::npos ? std::string() : assignment.substr(eq + 1);
+    char* end = nullptr;
+    const double value = text.empty() ? NAN : std::strtod(text.c_str(), &end);
+    if (key.empty() || !std::isfinite(value) || end == nullptr || *end != '\0')
+      throw InputError(fmt::format("--material-key '{}': expected KEY=VALUE with a finite number, e.g. jc_C=0.035",
+                                   assignment));
+    s.material_overrides.emplace_back(key, value);
+  }
+  if (o.friction) {
+    s.friction = *o.friction;
+    s.friction_note = "chosen with --friction";
+  }
+  s.friction_heat_share = o.friction_heat_share;
+  s.tool_heat_transfer_coefficient = o.tool_heat_transfer_coefficient;
+  s.tool_temperature = o.tool_temperature;
+  s.contact_detection = o.contact_detection;
+  return s;
+}
+
+// Every condition of data/experiments: all rows of the force file (every status) and the chip-type rows
+// that name a speed to simulate; with a user's force file, its rows only.
+std::vector<Condition> matrix_conditions(const ConditionRunSettings& settings, const ForceData& data) {
+  std::vector<Condition> conditions;
+  std::map<std::string, int> line_of_id;
+  for (const MeasuredForces& m : read_measured_forces(data.file)) {
+    Condition c;
+    static_cast<CuttingCondition&>(c) = force_condition(m);
+    // Forces per mm of width from here on: the file's width, or b = 1 mm ASSUMED (the simulated cut is 1 mm wide).
+    c.measured = m.per_mm_of_width(1.0);
+    if (const auto [it, added] = line_of_id.emplace(c.id, m.line); !added)
+      throw InputError(fmt::format("{}:{}: the condition {} is on line {} already (one row per h, speed and tool "
+                                   "angles: rows of repeated tests are averaged into one, as in the data files)",
+                                   data.file.source, m.line, c.id, it->second));
+    conditions.push_back(c);
+  }
+  for (const DataFile::Row& row : data.builtin ? read_data_file(embedded_tool_file(kChipFile), kChipFile).rows
+                                               : std::vector<DataFile::Row>{}) {
+    const auto& r = row.cells;
+    const double v = num(r, "simulate_speed_m_per_s");
+    if (!std::isfinite(v)) continue;
+    Condition c;
+    c.id = fmt::format("chip_{}_v{:g}mps", r.at("id"), v);
+    c.kind = "chip";
+    c.speed_m_per_s = v;
+    c.h_mm = 0.1;  // the lower end of the source's h range, as in the force data
+    c.edge_radius_um = 5.0;
+    c.chip = r;
+    conditions.push_back(c);
+  }
+  for (Condition& c : conditions) c.case_text = condition_case_text(c, settings);
+  return conditions;
+}
+
+bool same_h(double a, double b) { return std::abs(a - b) <= 1e-9; }
+bool same_speed(double a, double b) { return std::abs(a - b) <= 1e-6 * std::max(1.0, std::abs(b)); }
+
+// Marks the conditions this invocation runs. Filters given together must all match (--h 0.1 --speeds-m-per-min
+// 100 is one condition); a filter value that matches nothing in the matrix is an error, so that a typing error
+// does not silently run less.
+void select_conditions(std::vector<Condition>& all, const Options& o) {
+  const bool filtered = !o.h_mm.empty() || !o.speeds_m_per_min.empty() || !o.condition_ids.empty();
+  const auto available = [&](auto value_of) {
+    std::set<std::string> seen;
+    std::vector<std::string> list;
+    for (const Condition& c : all)
+      if (seen.insert(value_of(c)).second) list.push_back(value_of(c));
+    return join(list, ", ");
+  };
+  for (double h : o.h_mm)
+    if (std::none_of(all.begin(), all.end(), [&](const Condition& c) { return same_h(c.h_mm, h); }))
+      throw InputError(fmt::format("--h {:g}: no condition of the matrix has h = {:g} mm (it has h = {} mm)", h, h,
+                                   available([](const Condition& c) { return fmt::format("{:g}", c.h_mm); })));
+  for (double v : o.speeds_m_per_min)
+    if (std::none_of(all.begin(), all.end(), [&](const Condition& c) { return same_speed(c.speed_m_per_min(), v); }))
+      throw InputError(fmt::format("--speeds-m-per-min {:g}: no condition of the matrix has vc = {:g} m/min (it has {} "
+                                   "m/min)",
+                                   v, v, available([](const Condition& c) { return fmt::format("{:g}", c.speed_m_per_min()); })));
+  for (const std::string& id : o.condition_ids)
+    if (std::none_of(all.begin(), all.end(), [&](const Condition& c) { return c.id == id; }))
+      throw InputError(fmt::format("--conditions {}: no such condition (`mpmcut validate --list` names them)", id));
+  for (Condition& c : all) {
+    if (!filtered) {
+      const auto& quick = quick_condition_ids();
+      c.selected = !o.quick || !o.measurements.empty() || std::find(quick.begin(), quick.end(), c.id) != quick.end();
+      continue;
+    }
+    c.selected =
+        (o.h_mm.empty() || std::any_of(o.h_mm.begin(), o.h_mm.end(), [&](double h) { return same_h(c.h_mm, h); })) &&
+        (o.speeds_m_per_min.empty() || std::any_of(o.speeds_m_per_min.begin(), o.speeds_m_per_min.end(),
+                                                   [&](double v) { return same_speed(c.speed_m_per_min(), v); })) &&
+        (o.condition_ids.empty() || std::find(o.condition_ids.begin(), o.condition_ids.end(), c.id) != o.condition_ids.end());
+  }
+  if (std::none_of(all.begin(), all.end(), [](const Condition& c) { return c.selected; }))
+    throw InputError("the selection (--h, --speeds-m-per-min, --conditions together) matches no condition of the matrix");
+}
+
+std::string resolution_text(const Options& o) {
+  if (o.quick) return "--quick: cell = t0/4, 1 particle per cell, 4 cells of tool travel (a pipeline check)";
+  const std::string thermal =
+      o.cells_per_thermal_length > 0.0
+          ? fmt::format(" and at most l_th/K with K = {:g} cells across the thermal length l_th = sqrt(κ t0/V) "
+                        "(--cells-per-thermal-length; κ the workpiece's thermal diffusivity, V the cutting speed; "
+                        "every condition)",
+                        o.cells_per_thermal_length)
+          : std::string();
+  return fmt::format(
+      "cell = min(t0/N, r_n/M) with N = {} cells across the uncut chip thickness t0 (--cells-per-feed) and M = {:g} "
+      "cells across the measured edge radius r_n (--cells-per-edge-radius; force conditions){}, 2×2 particles per "
+      "cell{}. Tool travel 6·max(t0, r_n) (the steady window, after "
+      "max(40 % of the cut, 3 t0), is then at least 3 t0 long); workpiece height t0 + max(3 t0, 2 r_n), rounded up "
+      "by the preset so that the machined surface lies on a row of grid nodes (docs/cutting.md, \"Grid phase of the "
+      "tool tip\")",
+      o.cells_per_feed, o.cells_per_edge_radius, thermal,
+      o.measurements.empty()  // with a user's file there are no chip-type conditions
+          ? fmt::format("; chip-type conditions at t0/{} (the least the chip analysis needs to resolve segments; their "
+                        "5 µm edge is the preset's, not measured, and sets no limit)",
+                        chip_cells_per_feed(o.cells_per_feed))
+          : std::string());
+}
+
+// The tool's angles of a force condition as the measurements give them ("" where they give none).
+std::string tool_text(const Condition& c) {
+  std::string t = c.rake_deg ? fmt::format("rake {:g}°", *c.rake_deg) : "";
+  if (c.clearance_deg) t += (t.empty() ? "" : ", ") + fmt::format("clearance {:g}°", *c.clearance_deg);
+  return t;
+}
+
+// Conditions cut with the same tool angles (as far as the measurements give them).
+bool same_tool(const Condition& a, const Condition& b) { return a.rake_deg == b.rake_deg && a.clearance_deg == b.clearance_deg; }
+
+}  // namespace mpmcut::validation
