@@ -6,7 +6,7 @@ plot of Fc against speed (docs/python.md).
 
 Each run is a result directory like `mpmcut run` writes (results/speed_sweep/v<speed>/). Fc is the mean over the
 steady window when the cut reached it (summary.json), else the mean over the last half of the cut (forces.csv).
-The defaults take seconds per speed; they are far too coarse for numbers to quote (see docs/convergence.md).
+The defaults take seconds per speed; they are far too coarse for numbers to quote (see docs/results/convergence/convergence.md).
 """
 import argparse
 import os

@@ -8,6 +8,7 @@
 
 #include "app/plot_command.hpp"
 #include "io/input_error.hpp"
+#include "run/run_options.hpp"
 #include "studies/calibration.hpp"
 #include "studies/task_farm.hpp"
 
@@ -16,8 +17,6 @@ namespace mpmcut {
 namespace {
 
 namespace fs = std::filesystem;
-
-constexpr int kExitInputError = 2;
 
 struct CalibrateOptions {
   std::string config_file;

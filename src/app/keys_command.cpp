@@ -12,7 +12,7 @@ void add_keys_command(CLI::App& app) {
       "keys", "Print the [[material]] keys of the case file (unit, default, allowed values, meaning) as a markdown "
               "table, the one in docs/input.md");
   static bool markdown = false;
-  keys->add_flag("--markdown", markdown, "Markdown table (the only format)")->required();
+  keys->add_flag("--markdown", markdown, "Markdown table (the default and only format; accepted for scripts that name it)");
   keys->callback([]() {
     std::cout << material_keys_markdown();
     throw CLI::RuntimeError(0);  // the subcommand is done, main() must not go on

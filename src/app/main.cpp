@@ -1,11 +1,13 @@
 // mpmcut: the command-line program. Parses the command line, loads the case, and hands over to
 // run_case / resume_case / run_benchmark. Errors in the input are the user's: a clear message, exit code 2.
+#include <algorithm>
 #include <iostream>
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "app/analyze_command.hpp"
 #include "app/bench_command.hpp"
@@ -21,6 +23,40 @@
 #include "io/input_error.hpp"
 #include "cutting/cutting_case.hpp"
 #include "run/case_loading.hpp"
+#include "run/run_summary.hpp"
+
+namespace {
+
+using namespace mpmcut;
+
+// A signal that came after the last step: the results are complete, but the program stops there (no pictures)
+// with the documented code. Else a complete cut gets its pictures (chip fields, forces) as `mpmcut plot` draws
+// them; a missing or failing plotter is a warning, never a failed run.
+int with_pictures(int code, bool cutting, bool no_plots, const std::string& out_dir) {
+  if (code == kExitComplete && program_stop_token().stop_requested()) {
+    std::cerr << "interrupted after the run completed: results complete, pictures not drawn\n";
+    return kExitInterrupted;
+  }
+  if (code == kExitComplete && cutting && !no_plots) {
+    std::string why;
+    if (!python_plotting_available(true, why))
+      std::cerr << "warning: no pictures (" << why << "); the results are complete\n";
+    else if (const int plot = run_python_tool("plot_result.py", {out_dir, "--snapshots", "last"}); plot != 0)
+      std::cerr << "warning: plot_result.py failed (exit status " << plot << "); the results are complete\n";
+  }
+  return code;
+}
+
+// Whether the run in `dir` is a cut (its summary has the cutting results); false where it cannot be read.
+bool is_cutting_run(const std::string& dir) {
+  try {
+    return read_summary(std::filesystem::path(dir) / "summary.json").is_cutting_run();
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace mpmcut;
@@ -39,7 +75,7 @@ int main(int argc, char** argv) {
   CLI::App* run = app.add_subcommand("run", "Run a case file (or the built-in default case when none is given)");
   run->add_option("case", case_file, "Case file (TOML), see docs/input.md; default: the built-in Ti-6Al-4V cut (cases/ti64_default.toml)");
   run->add_option("-o,--out", out_dir, "Result directory (default: results/<case name>)");
-  run->add_option("-t,--threads", run_options.threads, "OpenMP threads (default: all cores)")->check(CLI::Range(1, 1024));
+  run->add_option("-t,--threads", run_options.threads, "OpenMP threads (default: all cores)")->check(CLI::Range(1, kMaxThreads));
   run->add_option("-s,--set", overrides, "Override an input key, e.g. --set solver.cfl=0.3 (repeatable)");
   run->add_flag("-f,--force", run_options.force, "Overwrite an existing result directory");
   bool keep_complete = false;
@@ -81,19 +117,22 @@ int main(int argc, char** argv) {
       "resume", "Continue a stopped run (killed, interrupted, failed to write) from its last valid checkpoint");
   resume->add_option("result_dir", resume_dir, "Result directory of the run")->required();
   resume->add_option("-t,--threads", resume_options.threads, "OpenMP threads (default: those of the original run)")
-      ->check(CLI::Range(1, 1024));
+      ->check(CLI::Range(1, kMaxThreads));
   resume->add_option("--checkpoint-every", resume_checkpoint_every, "As for run (default: that of the original run)")
       ->check(checkpoint_check);
   resume->add_flag("-f,--force", resume_options.force,
                    "Also resume a complete run (recomputes from its last checkpoint to the end)");
   resume->add_flag("--no-progress", resume_no_progress, "Do not print progress");
+  bool resume_no_plots = false;
+  resume->add_flag("--no-plots", resume_no_plots, "Do not draw the PNG pictures at the end of a cutting run");
 
   BenchOptions bench_options;
   CLI::App* bench = app.add_subcommand(
       "bench", "Measure particle-steps per second: elastic block, all-plastic Ti-6Al-4V block, the default cut");
   bench->add_option("--particles", bench_options.particles, "Approximate particle count")->check(CLI::Range(100L, 100000000L));
   bench->add_option("--steps", bench_options.steps, "Timed steps")->check(CLI::Range(1, 1000000));
-  bench->add_option("--threads", bench_options.threads, "Thread counts to measure (default: 1 2)");
+  bench->add_option("--threads", bench_options.threads, "Thread counts to measure (default: 1 2)")
+      ->check(CLI::Range(1, kMaxThreads));
   bench->add_option("--case", bench_options.which, "Which benchmark: elastic, plastic, cutting or all (default: all)")
       ->check(CLI::IsMember({"elastic", "plastic", "cutting", "all"}));
   bench->add_option("--cutting-steps", bench_options.cutting_steps, "Timed steps of the cutting case per thread count")
@@ -108,6 +147,21 @@ int main(int argc, char** argv) {
   add_calibrate_command(app);
   add_analyze_command(app);
   add_keys_command(app);
+
+  // A first word that is no command (a typing error, a case file without `run`) gets the list of commands, not
+  // CLI11's "A subcommand is required".
+  if (argc > 1 && argv[1][0] != '-') {
+    std::vector<std::string> names;
+    const CLI::App& commands = app;
+    for (const CLI::App* sub : commands.get_subcommands([](const CLI::App*) { return true; }))
+      names.push_back(sub->get_name());
+    if (std::find(names.begin(), names.end(), argv[1]) == names.end()) {
+      std::cerr << fmt::format("error: '{}' is not a command of mpmcut; the commands are: {} (mpmcut --help; a case "
+                               "file runs with `mpmcut run FILE`)\n",
+                               argv[1], fmt::join(names, ", "));
+      return kExitInputError;
+    }
+  }
 
   try {
     app.parse(argc, argv);
@@ -125,7 +179,7 @@ int main(int argc, char** argv) {
     resume_options.progress = !resume_no_progress;
     resume_options.checkpoint_every = parse_checkpoint_interval(resume_checkpoint_every);
     resume_options.checkpoint_every_given = resume->count("--checkpoint-every") > 0;
-    return resume_case(resume_options);
+    return with_pictures(resume_case(resume_options), is_cutting_run(resume_dir), resume_no_plots, resume_dir);
   }
 
   Case c;
@@ -175,20 +229,5 @@ int main(int argc, char** argv) {
     }
   }
   if (code < 0) code = run_case(c, run_options);
-  // A signal that came after the last step: the results are complete, but the program stops here
-  // (no pictures) with the documented code.
-  if (code == kExitComplete && program_stop_token().stop_requested()) {
-    std::cerr << "interrupted after the run completed: results complete, pictures not drawn\n";
-    return kExitInterrupted;
-  }
-  // A complete cut gets its pictures (chip fields, forces) as `mpmcut plot` draws them; a missing or
-  // failing plotter is a warning, never a failed run.
-  if (code == 0 && c.cutting && !no_plots) {
-    std::string why;
-    if (!python_plotting_available(true, why))
-      std::cerr << "warning: no pictures (" << why << "); the results are complete\n";
-    else if (const int plot = run_python_tool("plot_result.py", {out_dir, "--snapshots", "last"}); plot != 0)
-      std::cerr << "warning: plot_result.py failed (exit status " << plot << "); the results are complete\n";
-  }
-  return code;
+  return with_pictures(code, c.cutting.has_value(), no_plots, out_dir);
 }

@@ -11,6 +11,10 @@
 
 #include <fmt/format.h>
 
+#include "io/input_error.hpp"
+#include "run/case_loading.hpp"
+#include "run/run_options.hpp"
+
 namespace mpmcut {
 
 namespace {
@@ -122,6 +126,26 @@ int run_python_tool(const std::string& script, const std::vector<std::string>& a
   return run_and_wait(argv, false);
 }
 
+namespace {
+
+// Why `dir` cannot be plotted ("" if it can): the pictures are those of a cut (the chip, the tool, the forces).
+std::string not_a_cutting_run(const std::filesystem::path& dir) {
+  if (!std::filesystem::is_directory(dir)) return fmt::format("{} is not a directory", dir.string());
+  if (!std::filesystem::exists(dir / "summary.json") || !std::filesystem::exists(dir / "scene.toml"))
+    return fmt::format("'{}' is not a result directory of mpmcut run (no summary.json and scene.toml)", dir.string());
+  try {
+    if (!load_case(dir / "scene.toml").cutting)
+      return fmt::format("'{}' is not a cutting run (its scene.toml has no [cutting_process] record): the pictures "
+                         "are of a cut's chip, tool and forces; open its particles.pvd in ParaView instead",
+                         dir.string());
+  } catch (const InputError& e) {
+    return fmt::format("cannot read the run's scene: {}", e.what());
+  }
+  return "";
+}
+
+}  // namespace
+
 void add_plot_command(CLI::App& app) {
   struct Options {
     std::string result_dir;
@@ -135,9 +159,9 @@ void add_plot_command(CLI::App& app) {
   plot->add_option("--snapshots", options->snapshots,
                    "Snapshots to draw: last (default), all, or snapshot numbers N,M,... (the last is always drawn)");
   plot->callback([options]() {
-    if (!std::filesystem::is_directory(options->result_dir)) {
-      std::cerr << "error: " << options->result_dir << " is not a directory\n";
-      throw CLI::RuntimeError(2);
+    if (const std::string why = not_a_cutting_run(options->result_dir); !why.empty()) {
+      std::cerr << "error: " << why << "\n";
+      throw CLI::RuntimeError(kExitInputError);
     }
     std::string why;
     if (!python_plotting_available(true, why)) {

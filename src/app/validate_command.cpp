@@ -257,7 +257,7 @@ void add_validate_command(CLI::App& app) {
                 "and every complete condition is added to it, so that a matrix run over several sessions or machines "
                 "keeps its parts when the result directories are gone");
   v->add_option("-j,--jobs", o->jobs, "Runs at the same time (default: cores / threads)")->check(CLI::Range(1, 1024));
-  v->add_option("-t,--threads", o->threads, "OpenMP threads of each run (default: 1)")->check(CLI::Range(1, 1024));
+  v->add_option("-t,--threads", o->threads, "OpenMP threads of each run (default: 1)")->check(CLI::Range(1, kMaxThreads));
   v->add_flag("--no-plots", o->no_plots, "Only the tables");
   v->add_option("--material", o->material,
                 "Material set to run: a set of the library (default ti64-cutting; docs/materials.md) or of "

@@ -1,5 +1,6 @@
 #include "cutting/cutting_case.hpp"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -56,6 +57,8 @@ Case read_cutting_case(TableReader& top) {
   Scene scene;
   try {
     scene = build_cutting_scene(params, material);
+  } catch (const CuttingKeyError& e) {
+    cutting.fail(e.key, e.what());
   } catch (const std::invalid_argument& e) {
     cutting.fail_table(e.what());
   }
@@ -70,6 +73,24 @@ void read_cutting_process(TableReader& top, Case& c) {
   if (auto t = top.optional_table("cutting_process")) {
     c.cutting = read_cutting_parameters(*t);
     if (c.scene.rigid_bodies.empty()) t->fail_table("[cutting_process] needs the tool as the first [[rigid_body]]");
+    // The record's speed and cut length set the force window, the mass scaling's reference speed and the chip's
+    // kinematics in the results: a scene edited away from them would be reported as the process it no longer is.
+    const CuttingParameters& p = *c.cutting;
+    const Vec2 tool_velocity = c.scene.rigid_bodies.front().velocity;
+    const double tolerance = 1e-9;
+    if ((tool_velocity - Vec2(-p.cutting_speed, 0.0)).norm() > tolerance * p.cutting_speed)
+      t->fail_table(fmt::format(
+          "the tool (the first [[rigid_body]]) moves at ({:g}, {:g}) m/s, but the process it records cuts at "
+          "cutting_speed = {:g} m/s, i.e. velocity = [{:g}, 0.0]: change the speed in the [cutting] case and run it "
+          "again (its scene then has both), or edit cutting_process.cutting_speed together with the tool's velocity",
+          tool_velocity.x(), tool_velocity.y(), p.cutting_speed, -p.cutting_speed));
+    const double end_time = p.cut_length / p.cutting_speed;
+    if (std::abs(c.scene.solver.end_time - end_time) > tolerance * end_time)
+      t->fail_table(fmt::format(
+          "solver.end_time = {:g} s, but the process it records ends at cut_length / cutting_speed = {:g} s: change "
+          "cut_length in the [cutting] case and run it again, or edit cutting_process.cut_length together with "
+          "solver.end_time",
+          c.scene.solver.end_time, end_time));
   }
 }
 

@@ -127,7 +127,7 @@ void CuttingForcesObserver::at_history(const Simulation& sim) {
   const double rn = r.time > 0.0 ? r.normal / r.time : 0.0, rf = r.time > 0.0 ? r.friction / r.time : 0.0;
   row_sums_ = RakeSums{};
   csv_.row({t, filtered.x() * kPerMm, filtered.y() * kPerMm, tool.force.x() * kPerMm, tool.force.y() * kPerMm,
-            filtered.x() * c_.width_of_cut, filtered.y() * c_.width_of_cut, -tool.displacement.x(), length,
+            filtered.x() * c_.width_of_cut, filtered.y() * c_.width_of_cut, 0.0 - tool.displacement.x(), length,
             rn * kPerMm, rf * kPerMm});
 }
 
@@ -247,8 +247,7 @@ void CuttingForcesObserver::at_finish(const Simulation& sim, nlohmann::json& sum
                                 {"start_tool_travel_m", steady_start_time_ * c_.cutting_speed},
                                 {"end_tool_travel_m", -tool.displacement.x()},
                                 {"definition", "mean of the contact force over the tool travel after the chip has "
-                                               "formed: from max(steady_start_fraction * cut_length, min(3 t0, 0.6 "
-                                               "cut_length)) to the end"}};
+                                               "formed: " + steady_window_rule_text()}};
     if (const std::string w = steady_window_warning(c_); !w.empty()) summary["steady_window"]["warning"] = w;
     if (steady_mid_impulse_ && sim.time() > steady_mid_time_) {
       // Second half's mean minus the first half's, relative to the window's mean: a force that still

@@ -22,6 +22,11 @@ double steady_window_start_travel(const CuttingParameters& c) {
                   std::min(kEntryTravelT0 * c.uncut_chip_thickness, kShortCutWindowStart * c.cut_length));
 }
 
+std::string steady_window_rule_text() {
+  return fmt::format("from max(steady_start_fraction * cut_length, min({:g} t0, {:g} cut_length)) to the end",
+                     kEntryTravelT0, kShortCutWindowStart);
+}
+
 std::string steady_window_warning(const CuttingParameters& c) {
   const double formed = kEntryTravelT0 * c.uncut_chip_thickness;
   const double start = steady_window_start_travel(c);
@@ -53,16 +58,23 @@ Scene build_cutting_scene(const CuttingParameters& c, const MaterialParameters& 
   const double t0 = c.uncut_chip_thickness;
   const double h = cutting_cell_size(c);
   if (h > 0.5 * t0)
-    throw std::invalid_argument(fmt::format(
-        "cutting.cell_size = {:.3g} m is more than half the uncut chip thickness {:.3g} m: the chip would be one "
-        "or two cells thick",
-        h, t0));
+    throw CuttingKeyError(
+        c.cell_size > 0.0 ? "cell_size" : "uncut_chip_thickness",
+        fmt::format("cutting.cell_size = {:.3g} m is more than half the uncut chip thickness {:.3g} m: the chip would "
+                    "be one or two cells thick",
+                    h, t0));
   const double workpiece_length = c.workpiece_length > 0.0 ? c.workpiece_length : c.cut_length + 4.0 * t0 + 10.0 * h;
   const double workpiece_height = c.workpiece_height > 0.0 ? c.workpiece_height : 4.0 * t0;
   if (workpiece_length < c.cut_length + 2.0 * h)
-    throw std::invalid_argument("cutting.workpiece_length must exceed cut_length by at least two cells");
+    throw CuttingKeyError("workpiece_length",
+                          fmt::format("cutting.workpiece_length = {:.4g} m must be at least cut_length + 2 cells = {:.4g} m "
+                                      "(cut_length {:.4g} m, cell {:.4g} m), or 0 for cut_length + 4 t0 + 10 cells",
+                                      workpiece_length, c.cut_length + 2.0 * h, c.cut_length, h));
   if (workpiece_height <= t0 + 2.0 * h)
-    throw std::invalid_argument("cutting.workpiece_height must exceed uncut_chip_thickness by more than two cells");
+    throw CuttingKeyError("workpiece_height",
+                          fmt::format("cutting.workpiece_height = {:.4g} m must exceed uncut_chip_thickness + 2 cells = "
+                                      "{:.4g} m (t0 {:.4g} m, cell {:.4g} m), or be 0 for 4 t0",
+                                      workpiece_height, t0 + 2.0 * h, t0, h));
   const double tool_length = c.tool_length > 0.0 ? c.tool_length : std::max(3.0 * t0, 0.3e-3);
   const double tool_height = c.tool_height > 0.0 ? c.tool_height : std::max(4.0 * t0, 0.4e-3);
   const double chip_room = c.chip_room > 0.0 ? c.chip_room : std::max(0.6 * c.cut_length + 2.0 * t0, 5.0 * t0);

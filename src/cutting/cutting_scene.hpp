@@ -2,15 +2,24 @@
 // The cutting preset: process parameters -> a general Scene (workpiece, tool, grid, boundary
 // conditions, outputs). The result is written next to the results as scene.toml, so a user
 // can see and edit exactly what ran. The process itself travels beside the scene (cutting/case.hpp).
+#include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "solver/scene.hpp"
 #include "cutting/cutting_parameters.hpp"
 
 namespace mpmcut {
 
-// `material` is the resolved workpiece material. Throws std::invalid_argument naming the
-// parameter when the combination cannot be built (e.g. a cell larger than the chip).
+// A combination of [cutting] keys that cannot be built, with the key at fault (for the error's file and line).
+struct CuttingKeyError : std::invalid_argument {
+  CuttingKeyError(std::string key_name, const std::string& message)
+      : std::invalid_argument(message), key(std::move(key_name)) {}
+  std::string key;  // in [cutting], e.g. "workpiece_length"
+};
+
+// `material` is the resolved workpiece material. Throws CuttingKeyError naming the parameter when the
+// combination cannot be built (e.g. a cell larger than the chip), std::invalid_argument for the tool's shape.
 Scene build_cutting_scene(const CuttingParameters& c, const MaterialParameters& material);
 
 // The grid's cell size: cutting.cell_size, or t0 / 10 when it is not given, m.
@@ -23,6 +32,8 @@ double machined_surface_on_node_row(double workpiece_height, double uncut_chip_t
 
 // The tool travel after which the chip is taken as formed (start of the steady window), m.
 double steady_window_start_travel(const CuttingParameters& c);
+// The rule of steady_window_start_travel in words, for summary.json: "from max(...) to the end".
+std::string steady_window_rule_text();
 // A warning when less than half of the force window lies after the chip has formed (kEntryTravelT0 t0 of travel;
 // cut_length below 3.75 t0 with the default window): the means are then mostly the entry transient's. Empty otherwise.
 std::string steady_window_warning(const CuttingParameters& c);

@@ -88,10 +88,10 @@ std::string TableReader::location_of(const toml::source_region& region, const st
     if (region.path && region.path->starts_with("--set ")) return source_->name + ": " + *region.path;
     return fmt::format("{}:{}:{}", source_->name, region.begin.line, region.begin.column);
   }
-  // No position: a table created by an override on its way to a key.
-  for (const auto& o : source_->overrides)
-    if (is_path_prefix(path, o.key_path) || is_path_prefix(o.key_path, path))
-      return source_->name + ": --set '" + o.text + "'";
+  // No position: a value or table an override made (the last override of a key is the one whose value stands).
+  for (auto o = source_->overrides.rbegin(); o != source_->overrides.rend(); ++o)
+    if (is_path_prefix(path, o->key_path) || is_path_prefix(o->key_path, path))
+      return source_->name + ": --set '" + o->text + "'";
   return source_->name;
 }
 

@@ -216,6 +216,7 @@ PYBIND11_MODULE(_mpmcut, m) {
       .def_property_readonly("particle_count", [](const PyRun& r) { return r.run().simulation().particles().size(); });
 
   m.attr("particle_fields") = ParticleViews::names();
+  m.attr("particle_field_units") = ParticleViews::units();
 
   m.def(
       "grid_convergence",

@@ -63,6 +63,12 @@ std::vector<std::string> ParticleViews::names() {
   return out;
 }
 
+py::dict ParticleViews::units() {
+  py::dict out;
+  for_each_particle_field([&](const auto& f) { out[py::str(std::string(f.info.name))] = std::string(f.info.unit); });
+  return out;
+}
+
 py::dict ParticleViews::views(const Particles& particles, py::handle owner) {
   py::object guard = py::cast(ViewGuard{py::reinterpret_borrow<py::object>(owner)});
   guard_ = py::module_::import("weakref").attr("ref")(guard);

@@ -26,6 +26,9 @@ class ParticleViews {
   static void bind(pybind11::module_& m);
   // The field names, in the order views() lists them.
   static std::vector<std::string> names();
+  // Each field's unit as output names write it (m_per_s, Pa, K, kg_per_m, m3_per_m; "" dimensionless, "id" an
+  // index), per m of thickness where extensive.
+  static pybind11::dict units();
 
  private:
   pybind11::object guard_;  // a weak reference to the guard of the last views() call

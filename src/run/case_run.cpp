@@ -20,6 +20,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// How a run ended before its end time, for its summary's message.
+constexpr std::string_view kStopRequested = "stopped on request (a stop signal, or a stop asked by the program driving the run)";
+constexpr std::string_view kEndedByCaller = "ended by the caller before the end time";
+
 // fsync of a file or folder by path: the data reaches the disk, not only the page cache.
 void sync_path(const fs::path& p, bool folder = false) {
   const int fd = ::open(p.c_str(), O_RDONLY | O_CLOEXEC | (folder ? O_DIRECTORY : 0));
@@ -101,7 +105,7 @@ void CaseRun::begin() {
 bool CaseRun::advance() {
   begin();
   if (ended_ || finished()) return false;
-  if (stop_->stop_requested()) return stopped();  // asked between steps
+  if (stop_->stop_requested()) return stopped(kStopRequested);  // asked between steps
   const Scene& scene = sim_.scene();
   try {
     RunOutputs& out = *out_;
@@ -133,7 +137,7 @@ bool CaseRun::advance() {
         while (next_snapshot_ <= sim_.time() + eps) next_snapshot_ += snap_dt > 0 ? snap_dt : end;
       }
       if (options_.progress) progress_->update(sim_.time(), sim_.step_count(), sim_.last_dt());
-      if (stop_->stop_requested()) return stopped();
+      if (stop_->stop_requested()) return stopped(kStopRequested);
       if (checkpoint_due()) write_checkpoint();
     } catch (const SimulationError& e) {
       status_ = run_status::failed;
@@ -155,10 +159,10 @@ bool CaseRun::advance() {
   return !finished();
 }
 
-bool CaseRun::stopped() {
+bool CaseRun::stopped(std::string_view how) {
   status_ = run_status::interrupted;
-  message_ = fmt::format("interrupted by a signal at step {}, time {:.6g} s; continue with: mpmcut resume {}",
-                         sim_.step_count(), sim_.time(), root_.string());
+  message_ = fmt::format("{} at step {}, time {:.6g} s; continue with: mpmcut resume {}", how, sim_.step_count(),
+                         sim_.time(), root_.string());
   exit_code_ = kExitInterrupted;
   ended_ = true;
   return false;
@@ -176,7 +180,12 @@ void CaseRun::output_failed(const std::exception& e) {
 
 int CaseRun::finish() {
   begin();
-  if (exit_code_ == kExitComplete && !finished()) stopped();  // finished early: a stop (e.g. a library caller's)
+  if (exit_code_ == kExitComplete && !finished()) stopped(kEndedByCaller);  // finished early by a library caller
+  const SolverSpec& solver = sim_.scene().solver;
+  if (exit_code_ == kExitComplete && sim_.time() < solver.end_time - 1e-12 * solver.end_time)  // ended by max_steps
+    message_ = fmt::format("ended at solver.max_steps = {} at t = {:.6g} s, before solver.end_time = {:.6g} s: the "
+                           "results cover that part of the run only",
+                           solver.max_steps, sim_.time(), solver.end_time);
   if (exit_code_ == kExitComplete || exit_code_ == kExitInterrupted) {
     try {
       // Before the extra snapshot below, which a resumed run does not have (it is dropped on resume).
@@ -203,7 +212,9 @@ int CaseRun::finish() {
     if (!message_.empty()) std::cerr << "error: " << message_ << "\n";
     return kExitOutputError;
   }
-  if (!message_.empty()) std::cerr << (exit_code_ == kExitInterrupted ? "" : "error: ") << message_ << "\n";
+  if (!message_.empty())
+    std::cerr << (exit_code_ == kExitInterrupted ? "" : exit_code_ == kExitComplete ? "warning: " : "error: ")
+              << message_ << "\n";
   std::cerr << fmt::format(
       "{}: {} particles, {} steps, {:.3g} s simulated in {:.1f} s wall ({:.3g} particle-steps/s); results in {}\n",
       status_, sim_.particles().size(), sim_.step_count(), sim_.time(), wall_s,

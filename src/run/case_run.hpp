@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "solver/simulation.hpp"
@@ -67,7 +68,7 @@ class CaseRun {
   double session_wall_s() const { return std::chrono::duration<double>(Clock::now() - session_start_).count(); }
   bool checkpoint_due() const;
   void output_failed(const std::exception& e);  // an output error ends the run
-  bool stopped();  // a stop request ends the run; returns false
+  bool stopped(std::string_view how);  // a stop ends the run (`how`: what stopped it, for the message); false
   void begin();  // the console line and the progress display, before the first step
   void cut_back_outputs(const RunLoopState& loop) const;
   std::vector<FileLength> csv_lengths() const;

@@ -45,9 +45,24 @@ void write_expanded_scene(const Case& c, const fs::path& root) {
   write_file_atomically(root / "scene.toml", [&](std::ostream& out) { write_scene(c, out); });
 }
 
+// A scene the solver refused once its result directory existed: the summary says so (status "failed", the
+// reason), not "running". Best effort: the error itself is reported by the caller either way.
+void mark_failed_before_stepping(const Case& c, const fs::path& root, int threads, const std::string& why) {
+  RunSummary s = summary_before_setup(c.scene.title, c.scene.source_file, threads);
+  s.status = run_status::failed;
+  s.message = why;
+  try {
+    write_summary(root / "summary.json", s);
+  } catch (const std::exception&) {
+  }
+}
+
 }  // namespace
 
 int set_threads(int requested) {
+  if (requested < 0 || requested > kMaxThreads)
+    throw std::invalid_argument(
+        fmt::format("threads = {}: expected 1 to {} (0: all cores)", requested, kMaxThreads));
   const int threads = requested > 0 ? requested : omp_get_max_threads();  // OMP_NUM_THREADS or all cores
   omp_set_num_threads(threads);
   return threads;
@@ -63,10 +78,16 @@ std::unique_ptr<CaseRun> open_run(const Case& c, const RunOptions& options) {
   } catch (const InputError& e) {
     throw RunOpenError(e.what(), kExitInputError);
   }
-  const int threads = set_threads(options.threads);
+  int threads = 0;
+  try {
+    threads = set_threads(options.threads);
+  } catch (const std::invalid_argument& e) {
+    throw RunOpenError(e.what(), kExitInputError);
+  }
   fs::path root;
   try {
     root = ResultDirectory::open(options.out_dir, options.force).root();
+    write_summary(root / "summary.json", summary_before_setup(c.scene.title, c.scene.source_file, threads));
     write_expanded_scene(c, root);
   } catch (const std::exception& e) {
     throw RunOpenError(e.what(), kExitOutputError);
@@ -77,6 +98,7 @@ std::unique_ptr<CaseRun> open_run(const Case& c, const RunOptions& options) {
     write_summary(root / "summary.json", summarize(run->simulation(), c.cutting, run_status::running, 0.0, "", threads));
     run->start();
   } catch (const std::invalid_argument& e) {  // a scene the solver cannot build
+    mark_failed_before_stepping(c, root, threads, e.what());
     throw RunOpenError(e.what(), kExitInputError);
   } catch (const std::exception& e) {
     throw RunOpenError(std::string("output error: ") + e.what(), kExitOutputError);
@@ -121,8 +143,10 @@ std::unique_ptr<CaseRun> open_resumed_run(const RunOptions& options) {
   };
   std::error_code ec;
   if (!fs::is_directory(root, ec)) throw refuse("no such result directory");
-  if (!fs::exists(root / "summary.json") || !fs::exists(root / "scene.toml"))
-    throw refuse("it has no summary.json and scene.toml, so it is not an mpmcut result directory");
+  for (const char* file : {"summary.json", "scene.toml"})
+    if (!fs::exists(root / file))
+      throw refuse(fmt::format("it has no {}, so it is not the result directory of a run that started stepping",
+                               file));
   std::string status;
   try {
     status = read_summary(root / "summary.json").status;
@@ -168,7 +192,12 @@ std::unique_ptr<CaseRun> open_resumed_run(const RunOptions& options) {
   if (c.loop.mpmcut_version != MPMCUT_VERSION)
     std::cerr << "warning: the checkpoint was written by mpmcut " << c.loop.mpmcut_version << ", this is "
               << MPMCUT_VERSION << "; the continuation may differ from an uninterrupted run\n";
-  const int threads = set_threads(options.threads > 0 ? options.threads : c.loop.threads);
+  int threads = 0;
+  try {
+    threads = set_threads(options.threads > 0 ? options.threads : c.loop.threads);
+  } catch (const std::invalid_argument& e) {
+    throw refuse(e.what());
+  }
   RunOptions resumed = options;
   if (!options.checkpoint_every_given && c.loop.checkpoint_kind >= 0 && c.loop.checkpoint_kind <= 2)
     resumed.checkpoint_every = {static_cast<CheckpointInterval::Kind>(c.loop.checkpoint_kind), c.loop.checkpoint_value};

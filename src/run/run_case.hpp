@@ -41,7 +41,11 @@ ExistingRun existing_run(const std::filesystem::path& dir, const Case& c);
 // scene.toml); returns one of ExitCode.
 int resume_case(const RunOptions& options);
 
+// The most OpenMP threads a run may ask for (a larger team crashes the OpenMP runtime before it can say why).
+inline constexpr int kMaxThreads = 1024;
+
 // The OpenMP threads of a run: `requested`, or all cores (OMP_NUM_THREADS) when 0; set for the process.
+// std::invalid_argument outside [0, kMaxThreads].
 int set_threads(int requested);
 
 }  // namespace mpmcut

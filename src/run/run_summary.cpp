@@ -80,6 +80,18 @@ std::optional<double> section_number(const json& sections, const char* section, 
 
 }  // namespace
 
+RunSummary summary_before_setup(const std::string& title, const std::string& case_file, int threads) {
+  RunSummary s;
+  s.status = run_status::running;
+  s.message = "setting up the simulation (a stop now leaves no checkpoint: run it again)";
+  s.mpmcut_version = MPMCUT_VERSION;
+  s.source_revision = source_revision();
+  s.title = title;
+  s.case_file = case_file;
+  s.threads = threads;
+  return s;
+}
+
 RunSummary summarize(const Simulation& sim, const std::optional<CuttingParameters>& cutting, const std::string& status,
                      double wall_s, const std::string& message, int threads) {
   RunSummary s;

@@ -69,6 +69,10 @@ RunSummary summarize(const Simulation& sim, const std::optional<CuttingParameter
 
 nlohmann::json to_json(const RunSummary& s);
 // Throws std::runtime_error naming the key when a typed key has the wrong type.
+// The summary of a run whose simulation is still being set up (status running, no step yet): written as soon as its
+// result directory exists, so that a stop during set-up leaves a directory that says it is not complete and that
+// --force and --keep-complete may replace.
+RunSummary summary_before_setup(const std::string& title, const std::string& case_file, int threads);
 RunSummary summary_from_json(const nlohmann::json& j);
 
 void write_summary(const std::filesystem::path& file, const RunSummary& s);  // atomically

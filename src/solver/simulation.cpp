@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <string>
 
+#include <fmt/format.h>
+
 #include "contact/frictional_heating.hpp"
 #include "contact/rigid_heat_transfer.hpp"
 #include "core/cell_order.hpp"
@@ -52,6 +54,21 @@ Simulation::Simulation(const Scene& scene) : scene_(scene) {
   mark_boundary_nodes(scene_.boundaries, scene_.thermal, grid_);
   refresh_energy();
   state_.energy.initial = state_.energy.kinetic + state_.energy.elastic;
+  check_fixed_time_step();
+}
+
+// A fixed step beyond the wave-speed limit cell / (c + |v|) blows the explicit update up within a few steps, which
+// the guards would then report as something else (particles leaving the grid): refused here, with the numbers.
+void Simulation::check_fixed_time_step() const {
+  const double fixed = scene_.solver.fixed_time_step;
+  if (fixed <= 0.0) return;
+  const double limit = mechanical_time_step() / scene_.solver.cfl;  // the CFL step at cfl = 1
+  if (fixed <= limit) return;
+  throw std::invalid_argument(fmt::format(
+      "solver.fixed_time_step = {:g} s exceeds the stability limit of the explicit update at the start, cell / (wave "
+      "speed + fastest velocity) = {:g} s: the run would blow up. Use fixed_time_step = 0 (the CFL step, {:g} s at "
+      "solver.cfl = {:g}) or at most {:g} s",
+      fixed, limit, scene_.solver.cfl * limit, scene_.solver.cfl, limit));
 }
 
 // Mass scaling (docs/mass_scaling.md): a fixed factor, or the one that brings the initial

@@ -85,6 +85,7 @@ class Simulation {
 
   double resolve_mass_scaling();
   double mechanical_time_step() const;
+  void check_fixed_time_step() const;  // std::invalid_argument for a step beyond stability
 
   Scene scene_;
   Grid grid_;

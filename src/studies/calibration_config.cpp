@@ -11,6 +11,7 @@
 #include "io/material_library.hpp"
 #include "io/scene_writer.hpp"
 #include "io/toml_reader.hpp"
+#include "run/run_case.hpp"
 #include "studies/calibration.hpp"
 
 namespace mpmcut {
@@ -94,7 +95,7 @@ CalibrationConfig read_calibration_config(const fs::path& file, std::string_view
     r->check("cells_per_thermal_length", c.runs.cells_per_thermal_length >= 0.0 && c.runs.cells_per_thermal_length <= 100.0,
              "a number from 0 (no limit) to 100", c.runs.cells_per_thermal_length);
     c.threads = static_cast<int>(r->integer("threads", 1));
-    r->check("threads", c.threads >= 1 && c.threads <= 1024, "an integer from 1 to 1024", c.threads);
+    r->check("threads", c.threads >= 1 && c.threads <= kMaxThreads, fmt::format("an integer from 1 to {}", kMaxThreads), c.threads);
     c.runs.friction = r->number("friction", c.runs.friction);
     r->check("friction", c.runs.friction >= 0.0 && c.runs.friction <= 2.0, "a Coulomb coefficient in [0, 2]",
              c.runs.friction);

@@ -100,6 +100,19 @@ def test_particle_fields_are_read_only_views_without_copies(tmp_path):
     run.finish()
 
 
+def test_particle_field_units_cover_every_field():
+    units = mpmcut.particle_field_units
+    assert set(units) == set(mpmcut.particle_fields)
+    assert units["temperature"] == "K" and units["stress"] == "Pa" and units["velocity"] == "m_per_s"
+    assert units["mass"] == "kg_per_m" and units["plastic_strain"] == "" and units["body"] == "id"
+
+
+@pytest.mark.parametrize("threads", [-1, 1025, 100000])
+def test_a_thread_count_out_of_range_is_an_error_not_a_crash(tmp_path, threads):
+    with pytest.raises(Exception, match="threads = .*expected 1 to 1024"):
+        mpmcut.Run(mpmcut.case_from_toml(ELASTIC), tmp_path / "r", threads=threads)
+
+
 def test_stop_checkpoint_and_resume_continue_the_same_run(tmp_path, quick_case, short):
     case = mpmcut.load_case(quick_case, short)
     whole = mpmcut.run_case(case, tmp_path / "whole", threads=1)
@@ -110,6 +123,8 @@ def test_stop_checkpoint_and_resume_continue_the_same_run(tmp_path, quick_case, 
     stopped = mpmcut.run_case(case, tmp_path / "stopped", threads=1, callback=stop_at_60)
     assert stopped.status == "interrupted" and stopped.exit_code == 130
     assert stopped.summary()["last_checkpoint"].startswith("checkpoints/")
+    # Stopped by the caller, not necessarily by a signal: the message does not claim one.
+    assert stopped.summary()["message"].startswith("stopped on request (a stop signal, or a stop asked by the program")
     resumed = mpmcut.Run.resume(tmp_path / "stopped", threads=1)
     assert resumed.step_count == 60
     assert resumed.run() == "complete"
@@ -121,6 +136,11 @@ def test_stop_checkpoint_and_resume_continue_the_same_run(tmp_path, quick_case, 
     assert run.checkpoint().exists()
     run.stop()
     assert run.run() == "interrupted"
+    early = mpmcut.Run(case, tmp_path / "early", threads=1)
+    early.step(10)
+    assert early.finish() == "interrupted"
+    assert early.summary()["message"].startswith("ended by the caller before the end time at step 10")
+    assert run.summary()["message"].startswith("stopped on request")
 
 
 def test_the_gil_is_released_while_stepping(tmp_path, quick_case, short):

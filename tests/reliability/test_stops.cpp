@@ -121,9 +121,9 @@ TEST_F(Stops, SigtermDuringSetupOfAHugeSceneExitsAtOnce) {
   const pid_t pid = spawn_mpmcut({"run", case_file.string(), "--out", out.string(), "--no-progress", "--threads", "1"},
                                  {dir_ / "big.log"});
   // Until the expanded scene is written: parsing and the estimate are done, and the simulation's
-  // grid and particles are being built (summary.json is written once they are).
+  // grid and particles are being built (summary.json says "setting up" until they are).
   ASSERT_TRUE(wait_until([&] { return fs::exists(out / "scene.toml"); }, 20.0)) << read_file(dir_ / "big.log");
-  const bool built_already = fs::exists(out / "summary.json");
+  const bool built_already = read_file(out / "summary.json").find("setting up") == std::string::npos;
   const auto sent = std::chrono::steady_clock::now();
   ::kill(pid, SIGTERM);
   const int code = exit_within(pid, 5.0);
@@ -134,6 +134,16 @@ TEST_F(Stops, SigtermDuringSetupOfAHugeSceneExitsAtOnce) {
   EXPECT_FALSE(fs::exists(out / "checkpoints" / "latest")) << "it went on to the step loop";
   EXPECT_NE(read_file(dir_ / "big.log").find("interrupted"), std::string::npos);
   EXPECT_FALSE(built_already) << "the set-up was over before the signal: the test did not hit it";
+  // The directory says it is not complete, and a rerun may replace it (--keep-complete, as a sweep's runs do;
+  // it used to refuse a directory without summary.json even with --force).
+  EXPECT_EQ(summary_status(out), "running");
+  const fs::path small = dir_ / "small.toml";
+  write_file(small, kDiskCase);
+  const pid_t again = spawn_mpmcut(
+      {"run", small.string(), "--out", out.string(), "--keep-complete", "--no-progress", "--threads", "1"},
+      {dir_ / "again.log"});
+  EXPECT_EQ(exit_within(again, 60.0), 0) << read_file(dir_ / "again.log");
+  EXPECT_EQ(summary_status(out), "complete");
 }
 
 // A sweep stopped while its runs step: every run stops (checkpoint, "interrupted"), no child is

@@ -3,6 +3,7 @@
 // point, and a run that cannot fit in memory or cannot finish is refused before allocation.
 #include <gtest/gtest.h>
 
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,8 @@
 #include "../support/parse_errors.hpp"
 #include "io/input_error.hpp"
 #include "run/case_loading.hpp"
+#include "run/run_case.hpp"
+#include "solver/simulation.hpp"
 
 namespace mpmcut {
 namespace {
@@ -126,6 +129,31 @@ TEST(InputBounds, StepEstimateRefusesRunsThatCannotFinish) {
   const Scene capped = parse_case(kDisk, "case.toml", {"solver.fixed_time_step=1e-12", "solver.max_steps=10"}).scene;
   EXPECT_EQ(estimate_run(capped).steps, 10.0);
   EXPECT_NO_THROW(check_run_fits(capped, estimate_run(capped), 1e12));
+}
+
+// A fixed step beyond the wave-speed limit blew the colliding disks up (energy residual -626) and was reported as
+// a particle leaving the grid: it is refused when the simulation is built, with the limit in the message.
+TEST(InputBounds, AFixedTimeStepBeyondStabilityIsRefusedWithTheLimit) {
+  const Scene unstable = parse_case(kDisk, "case.toml", {"solver.fixed_time_step=0.5"}).scene;
+  try {
+    Simulation sim(unstable);
+    ADD_FAILURE() << "a fixed step of 0.5 s was accepted";
+  } catch (const std::invalid_argument& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("solver.fixed_time_step = 0.5 s exceeds the stability limit"), std::string::npos)
+        << message;
+    EXPECT_NE(message.find("at most"), std::string::npos) << message;
+  }
+  // elastic-unit (E = 1000 Pa, rho = 1000 kg/m^3): c ~ 1 m/s, so 0.01 s is well inside the limit of ~0.08 s.
+  EXPECT_NO_THROW(Simulation(parse_case(kDisk, "case.toml", {"solver.fixed_time_step=0.01"}).scene));
+}
+
+// A thread count the OpenMP runtime cannot take crashed it (segfault at 100000 from Python): refused instead.
+TEST(InputBounds, ThreadCountsOutsideOneTo1024AreRefused) {
+  for (const int threads : {-1, kMaxThreads + 1, 100000})
+    EXPECT_THROW(set_threads(threads), std::invalid_argument) << threads;
+  EXPECT_EQ(set_threads(1), 1);
+  EXPECT_GE(set_threads(0), 1);  // 0: all cores
 }
 
 }  // namespace

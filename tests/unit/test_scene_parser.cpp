@@ -433,6 +433,9 @@ TEST(SceneOverrides, UnknownKeysAndBadValuesNameTheOverride) {
   EXPECT_NE(m.find("expected key=value"), std::string::npos) << m;
   m = error_of(kBase, {"title.x=1"});
   EXPECT_NE(m.find("'title' is not a table"), std::string::npos) << m;
+  // A key set twice: the error is of the value that stands, the last override's (it named the first).
+  m = error_of(kBase, {"solver.scheme=\"usl\"", "solver.scheme=usf"});
+  EXPECT_NE(m.find("--set 'solver.scheme=usf'"), std::string::npos) << m;
 }
 
 // --- materials in scenes ----------------------------------------------------------------------
@@ -569,6 +572,32 @@ TEST(SceneParser, CuttingAnElasticWorkpieceIsAnInputError) {
                           "uncut_chip_thickness = 0.1e-3\ncut_length = 0.1e-3\ncell_size = 20e-6\n";
   expect_error(cut, "material =", {"cutting.material", "elastic-steel", "is elastic", "\"ti64-cutting\""});
   EXPECT_EQ(error_of(cut).find("\"elastic-unit\""), std::string::npos) << "an elastic set offered for cutting";
+}
+
+// An expanded cut's scene edited away from its [cutting_process] record would be reported as the process it no
+// longer is (a tool moved at 40 m/s was summarised as 20 m/s): the record and the scene must agree.
+TEST(SceneParser, AnExpandedCutWhoseToolOrEndTimeNoLongerMatchesItsRecordIsAnInputError) {
+  const std::string cut = "[cutting]\nmaterial = \"ti64-cutting\"\ncutting_speed = 20.0\n"
+                          "uncut_chip_thickness = 0.1e-3\ncut_length = 0.1e-3\ncell_size = 20e-6\n";
+  std::ostringstream expanded;
+  write_scene(parse_case(cut, "case.toml"), expanded);
+  EXPECT_EQ(error_of(expanded.str()), "");  // as written, it reads back
+  const std::string faster = error_of(expanded.str(), {"rigid_body[0].velocity=[-40.0, 0.0]"});
+  for (const char* part : {"cutting_process", "(-40, 0) m/s", "cutting_speed = 20 m/s"})
+    EXPECT_NE(faster.find(part), std::string::npos) << part << " not in: " << faster;
+  const std::string shorter = error_of(expanded.str(), {"solver.end_time=2e-6"});
+  for (const char* part : {"solver.end_time = 2e-06 s", "cut_length / cutting_speed = 5e-06 s"})
+    EXPECT_NE(shorter.find(part), std::string::npos) << part << " not in: " << shorter;
+}
+
+// A workpiece too small for its cut names the key, its value and the least it may be, at the key's line.
+TEST(SceneParser, AWorkpieceTooSmallForItsCutIsAnErrorAtItsKey) {
+  const std::string cut = "[cutting]\nmaterial = \"ti64-cutting\"\ncutting_speed = 20.0\n"
+                          "uncut_chip_thickness = 0.1e-3\ncut_length = 0.2e-3\ncell_size = 20e-6\n";
+  expect_error(cut + "workpiece_length = 0.1e-3\n", "workpiece_length =",
+               {"cutting.workpiece_length = 0.0001 m", "at least cut_length + 2 cells = 0.00024 m"});
+  expect_error(cut + "workpiece_height = 0.12e-3\n", "workpiece_height =",
+               {"cutting.workpiece_height = 0.00012 m", "uncut_chip_thickness + 2 cells = 0.00014 m"});
 }
 
 // A speed set on the command line replaces the file's speed in either spelling (sweep --speeds on a

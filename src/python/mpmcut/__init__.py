@@ -10,10 +10,10 @@ See docs/python.md. A run writes the same result directory as `mpmcut run`, thro
 """
 import os
 
-from ._mpmcut import Case, InputError, Run, __version__, grid_convergence, particle_fields
+from ._mpmcut import Case, InputError, Run, __version__, grid_convergence, particle_field_units, particle_fields
 
 __all__ = ["Case", "InputError", "Run", "load_case", "case_from_toml", "default_case", "overrides_from", "run_case",
-           "particle_fields", "grid_convergence", "__version__"]
+           "particle_fields", "particle_field_units", "grid_convergence", "__version__"]
 
 
 def _toml_value(value):
