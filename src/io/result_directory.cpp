@@ -56,11 +56,13 @@ ResultDirectory ResultDirectory::open(const fs::path& dir, bool force) {
   const fs::file_status st = fs::status(dir, ec);
   if (ec && ec != std::errc::no_such_file_or_directory) fail(dir, "cannot access it", ec);
 
+  DirectoryLock lock;
   if (fs::exists(st)) {
     if (!fs::is_directory(st)) {
       throw std::runtime_error(
           fmt::format("result directory '{}' exists and is not a directory", dir.string()));
     }
+    lock = DirectoryLock::acquire(dir);
     const bool empty = fs::is_empty(dir, ec);
     if (ec) fail(dir, "cannot list its contents", ec);
     if (!empty) {
@@ -73,9 +75,10 @@ ResultDirectory ResultDirectory::open(const fs::path& dir, bool force) {
   } else {
     fs::create_directories(dir, ec);
     if (ec) fail(dir, "cannot create it", ec);
+    lock = DirectoryLock::acquire(dir);
   }
   check_writable(dir);
-  return ResultDirectory(dir);
+  return ResultDirectory(dir, std::move(lock));
 }
 
 }  // namespace mpmcut

@@ -8,6 +8,9 @@
 // summary.json is also how open() recognises a directory it may clear with force.
 #include <filesystem>
 #include <string_view>
+#include <utility>
+
+#include "io/directory_lock.hpp"
 
 namespace mpmcut {
 
@@ -19,16 +22,21 @@ class ResultDirectory {
   //  - existing and non-empty: std::runtime_error "result directory 'X' already exists; use
   //    --force to overwrite", unless `force`; with `force` its contents are deleted, but only if
   //    it holds a summary.json (so that a mistyped --out cannot wipe an unrelated directory).
-  // Then checks that a file can be written in it. Errors name the path and the system error.
+  // The directory is locked (io/directory_lock.hpp) before anything in it is deleted: one that another run is
+  // writing into is refused, not cleared. Then checks that a file can be written in it. Errors name the path and
+  // the system error.
   static ResultDirectory open(const std::filesystem::path& dir, bool force);
 
   const std::filesystem::path& root() const { return root_; }
   // Path of an output file inside the directory, e.g. path("summary.json").
   std::filesystem::path path(std::string_view name) const { return root_ / name; }
+  // The directory's lock, for whoever writes into it from now on (held until released or destroyed).
+  DirectoryLock take_lock() { return std::move(lock_); }
 
  private:
-  explicit ResultDirectory(std::filesystem::path root) : root_(std::move(root)) {}
+  ResultDirectory(std::filesystem::path root, DirectoryLock lock) : root_(std::move(root)), lock_(std::move(lock)) {}
   std::filesystem::path root_;
+  DirectoryLock lock_;
 };
 
 }  // namespace mpmcut

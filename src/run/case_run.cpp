@@ -219,6 +219,7 @@ int CaseRun::finish() {
       "{}: {} particles, {} steps, {:.3g} s simulated in {:.1f} s wall ({:.3g} particle-steps/s); results in {}\n",
       status_, sim_.particles().size(), sim_.step_count(), sim_.time(), wall_s,
       wall_s > 0 ? sim_.particles().size() * static_cast<double>(sim_.step_count()) / wall_s : 0.0, root_.string());
+  lock_.release();  // the directory's files are final: another run (a rerun with --force) may take it
   return exit_code_;
 }
 

@@ -18,6 +18,7 @@
 #include <string_view>
 #include <vector>
 
+#include "io/directory_lock.hpp"
 #include "solver/simulation.hpp"
 #include "cutting/case.hpp"
 #include "core/thread_tuner.hpp"
@@ -47,6 +48,8 @@ class CaseRun {
   // After the last advance(): the final checkpoint (when stopped) and snapshot, summary.json and the
   // console line. Returns the exit code (ExitCode).
   int finish();
+  // Keeps the result directory's lock (io/directory_lock.hpp) until the run has finished.
+  void hold(DirectoryLock lock) { lock_ = std::move(lock); }
   // advance() until it returns false, then finish(); the stop token's loop scope around both.
   int run_to_end();
 
@@ -64,6 +67,7 @@ class CaseRun {
   RunSummary summary() const;
 
  private:
+  DirectoryLock lock_;  // no other run writes into root_ while this one does
   using Clock = std::chrono::steady_clock;
   double session_wall_s() const { return std::chrono::duration<double>(Clock::now() - session_start_).count(); }
   bool checkpoint_due() const;

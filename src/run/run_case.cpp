@@ -85,8 +85,11 @@ std::unique_ptr<CaseRun> open_run(const Case& c, const RunOptions& options) {
     throw RunOpenError(e.what(), kExitInputError);
   }
   fs::path root;
+  DirectoryLock lock;
   try {
-    root = ResultDirectory::open(options.out_dir, options.force).root();
+    ResultDirectory directory = ResultDirectory::open(options.out_dir, options.force);
+    root = directory.root();
+    lock = directory.take_lock();
     write_summary(root / "summary.json", summary_before_setup(c.scene.title, c.scene.source_file, threads));
     write_expanded_scene(c, root);
   } catch (const std::exception& e) {
@@ -95,6 +98,7 @@ std::unique_ptr<CaseRun> open_run(const Case& c, const RunOptions& options) {
   std::unique_ptr<CaseRun> run;
   try {
     run = std::make_unique<CaseRun>(c, root, options, threads);
+    run->hold(std::move(lock));
     write_summary(root / "summary.json", summarize(run->simulation(), c.cutting, run_status::running, 0.0, "", threads));
     run->start();
   } catch (const std::invalid_argument& e) {  // a scene the solver cannot build
@@ -143,6 +147,12 @@ std::unique_ptr<CaseRun> open_resumed_run(const RunOptions& options) {
   };
   std::error_code ec;
   if (!fs::is_directory(root, ec)) throw refuse("no such result directory");
+  DirectoryLock lock;
+  try {
+    lock = DirectoryLock::acquire(root);
+  } catch (const std::runtime_error& e) {
+    throw refuse(e.what());
+  }
   for (const char* file : {"summary.json", "scene.toml"})
     if (!fs::exists(root / file))
       throw refuse(fmt::format("it has no {}, so it is not the result directory of a run that started stepping",
@@ -205,6 +215,7 @@ std::unique_ptr<CaseRun> open_resumed_run(const RunOptions& options) {
   std::unique_ptr<CaseRun> run;
   try {
     run = std::make_unique<CaseRun>(resumed_case, root, resumed, threads);
+    run->hold(std::move(lock));
     run->resume(std::move(c), loaded->file);
     write_summary(root / "summary.json",
                   summarize(run->simulation(), resumed_case.cutting, run_status::running, 0.0, "", threads));

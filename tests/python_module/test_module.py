@@ -107,6 +107,19 @@ def test_particle_field_units_cover_every_field():
     assert units["mass"] == "kg_per_m" and units["plastic_strain"] == "" and units["body"] == "id"
 
 
+def test_a_second_run_into_a_directory_in_use_is_refused_until_the_first_finishes(tmp_path):
+    # A second Run with force=True used to wipe the directory while the first still wrote into it.
+    case = mpmcut.case_from_toml(ELASTIC)
+    first = mpmcut.Run(case, tmp_path / "r", threads=1)
+    first.step(2)
+    with pytest.raises(RuntimeError, match="is in use"):
+        mpmcut.Run(case, tmp_path / "r", force=True, threads=1)
+    assert (tmp_path / "r" / "history.csv").exists()
+    first.finish()
+    second = mpmcut.Run(case, tmp_path / "r", force=True, threads=1)  # free once the first has finished
+    second.finish()
+
+
 @pytest.mark.parametrize("threads", [-1, 1025, 100000])
 def test_a_thread_count_out_of_range_is_an_error_not_a_crash(tmp_path, threads):
     with pytest.raises(Exception, match="threads = .*expected 1 to 1024"):

@@ -253,6 +253,7 @@ TEST_F(OutputWriters, ResultDirectoryRefusesNonEmptyWithoutForce) {
   ResultDirectory first = ResultDirectory::open(out, false);  // created
   EXPECT_TRUE(fs::is_directory(out));
   EXPECT_EQ(first.path("summary.json"), out / "summary.json");
+  first.take_lock().release();  // as when its run has ended
   EXPECT_NO_THROW(ResultDirectory::open(out, false));  // empty: fine
   write_json_atomically(first.path("summary.json"), {{"status", "complete"}});
   { std::ofstream(first.path("history.csv")) << "time_s\n"; }
@@ -267,6 +268,28 @@ TEST_F(OutputWriters, ResultDirectoryRefusesNonEmptyWithoutForce) {
         << e.what();
   }
   ResultDirectory::open(out, true);
+  EXPECT_TRUE(fs::is_empty(out));
+}
+
+// Two runs aimed at one directory (two Python Runs, or a run and a `run --force`) mixed their outputs, the
+// second deleting the first's files while they were written: the directory is locked while a run writes into it.
+TEST_F(OutputWriters, ResultDirectoryInUseByAnotherRunIsRefusedNotCleared) {
+  const fs::path out = dir_ / "busy";
+  ResultDirectory first = ResultDirectory::open(out, false);
+  write_json_atomically(first.path("summary.json"), {{"status", "running"}});
+  { std::ofstream(first.path("history.csv")) << "time_s\n"; }
+  try {
+    ResultDirectory::open(out, true);
+    ADD_FAILURE() << "a directory in use was opened";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("is in use"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(fs::exists(out / "history.csv")) << "the running run's file was deleted";
+  EXPECT_THROW(DirectoryLock::acquire(out), std::runtime_error);  // a resume is refused too
+  DirectoryLock held = first.take_lock();
+  EXPECT_TRUE(held.held());
+  held.release();
+  EXPECT_NO_THROW(ResultDirectory::open(out, true));  // once it has ended
   EXPECT_TRUE(fs::is_empty(out));
 }
 
