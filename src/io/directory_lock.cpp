@@ -27,8 +27,7 @@ DirectoryLock DirectoryLock::acquire(const std::filesystem::path& dir) {
           "result directory '{}' is in use: another run (mpmcut run or resume, or a Python Run) is writing into it "
           "now; wait for it to end or choose another --out",
           dir.string()));
-    throw std::runtime_error(
-        fmt::format("result directory '{}': cannot lock it: {}", dir.string(), std::strerror(error)));
+    return DirectoryLock();  // a file system that cannot lock (some network ones): the run goes on without it
   }
   return DirectoryLock(fd);
 }

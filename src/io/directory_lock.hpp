@@ -10,7 +10,8 @@ namespace mpmcut {
 class DirectoryLock {
  public:
   // Locks the existing directory `dir`; std::runtime_error naming it when another process (or another open
-  // run of this one) holds the lock, or when it cannot be opened.
+  // run of this one) holds the lock, or when it cannot be opened. Where the file system cannot lock at all
+  // (some network file systems), an unheld lock: the run goes on unprotected rather than not at all.
   static DirectoryLock acquire(const std::filesystem::path& dir);
 
   DirectoryLock() = default;
