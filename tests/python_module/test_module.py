@@ -19,6 +19,8 @@ def test_overrides_from_a_dict_are_set_strings():
         "solver.cfl=0.3", "body[0].velocity=[1, 0.5]", 'solver.scheme="usl"',
         "solver.remove_escaping_particles=true"]
     assert mpmcut.overrides_from(["solver.cfl=0.2"]) == ["solver.cfl=0.2"]
+    with pytest.raises(TypeError, match="not one string"):  # it was taken apart into characters
+        mpmcut.overrides_from("solver.cfl=0.2")
 
 
 def test_cases_from_text_file_and_overrides(quick_case):

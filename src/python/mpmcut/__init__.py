@@ -38,6 +38,9 @@ def overrides_from(overrides):
         return []
     if isinstance(overrides, dict):
         return [f"{key}={_toml_value(value)}" for key, value in overrides.items()]
+    if isinstance(overrides, (str, bytes)):  # would be taken apart into characters
+        raise TypeError(f"overrides: a dict {{key: value}} or a list of 'key=value' strings, not one string "
+                        f"({overrides!r}: write [{overrides!r}])")
     return [str(o) for o in overrides]
 
 
