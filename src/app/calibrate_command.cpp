@@ -34,6 +34,13 @@ int calibrate(const CalibrateOptions& o) {
     config = read_calibration_config(o.config_file, embedded_tool_file(kBuiltinForcesFile));
     out = o.out_dir.empty() ? fs::path("results") / ("calibration_" + fs::path(o.config_file).stem().string())
                             : fs::path(o.out_dir);
+    // A directory that holds no calibration.toml is not a calibration's: neither written into nor (--force)
+    // deleted, so that a mistyped --out cannot wipe or litter unrelated files.
+    std::error_code ec;
+    if (fs::exists(out) && !fs::is_empty(out, ec) && !fs::exists(out / "calibration.toml"))
+      throw InputError(fmt::format("--out {}: the directory is not empty and holds no calibration.toml, so it is not "
+                                   "a calibration's result directory; refusing to {} it. Choose another --out",
+                                   out.string(), o.force ? "delete" : "write into"));
     if (o.force) fs::remove_all(out);
     const int jobs = o.jobs > 0 ? o.jobs
                                 : std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / config.threads);

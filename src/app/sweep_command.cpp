@@ -120,15 +120,39 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
                                      e.what()));
       }
     }
-  std::vector<double> feeds_m = o.feeds_m;
-  if (feeds_m.empty()) {  // the case's own feed (load_case also checks the case before anything runs)
+  // The case itself (load_case checks it before anything runs) and its own feed.
+  double own_feed_m = 0.0;
+  {
     const Case c = load_case(o.case_file, o.overrides);
     if (!c.cutting) {
       std::cerr << "error: " << o.case_file << " has no [cutting] table: sweep needs a cutting case\n";
       return 2;
     }
-    feeds_m = {c.cutting->uncut_chip_thickness};
+    own_feed_m = c.cutting->uncut_chip_thickness;
   }
+  // The grid's own values: each given once (two cases would share one directory and one resolution would be
+  // "refined" onto itself), and each making a valid case (a feed in mm instead of m, a NaN), before anything runs.
+  const auto given_once = [](const auto& values, const char* option) {
+    for (std::size_t i = 0; i < values.size(); ++i)
+      for (std::size_t j = 0; j < i; ++j)
+        if (values[i] == values[j]) throw InputError(fmt::format("{} {}: the value is given twice", option, values[i]));
+  };
+  given_once(o.speeds_m_per_s, "--speeds");
+  given_once(o.feeds_m, "--feeds");
+  given_once(o.cells_per_feed, "--cells-per-feed");
+  const auto check_grid_value = [&](const char* option, const char* key, double value) {
+    std::vector<std::string> with = o.overrides;
+    with.push_back(fmt::format("{}={}", key, value));
+    try {
+      (void)load_case(o.case_file, with);
+    } catch (const InputError& e) {
+      throw InputError(fmt::format("{} {:g}: the value makes a case that does not read: {}", option, value, e.what()));
+    }
+  };
+  for (double v : o.speeds_m_per_s) check_grid_value("--speeds", "cutting.cutting_speed", v);
+  for (double h : o.feeds_m) check_grid_value("--feeds", "cutting.uncut_chip_thickness", h);
+  std::vector<double> feeds_m = o.feeds_m;
+  if (feeds_m.empty()) feeds_m = {own_feed_m};
   fs::create_directories(out / "logs");
   const int jobs = o.jobs > 0 ? o.jobs : std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / o.threads);
 

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -97,6 +98,18 @@ std::string join(const std::vector<std::string>& parts, const std::string& sep) 
 }
 
 ConditionRunSettings run_settings(const Options& o) {
+  // CLI11's range checks let NaN through (every comparison with it is false).
+  for (const auto& [option, value] :
+       {std::pair<const char*, std::optional<double>>{"--cells-per-edge-radius", o.cells_per_edge_radius},
+        {"--cells-per-thermal-length", o.cells_per_thermal_length}, {"--friction", o.friction},
+        {"--friction-heat-share", o.friction_heat_share},
+        {"--tool-heat-transfer-coefficient", o.tool_heat_transfer_coefficient},
+        {"--tool-temperature", o.tool_temperature}})
+    if (value && !std::isfinite(*value)) throw InputError(fmt::format("{} {}: a finite number is needed", option, *value));
+  if (!o.records_dir.empty() && std::filesystem::exists(o.records_dir) && !std::filesystem::is_directory(o.records_dir))
+    throw InputError(fmt::format("--records {}: not a directory (the run records are kept in a directory, one "
+                                 "folder per condition)",
+                                 o.records_dir));
   ConditionRunSettings s;
   s.quick = o.quick;
   s.cells_per_feed = o.cells_per_feed;

@@ -1,4 +1,5 @@
 #include "io/toml_reader.hpp"
+#include "io/edit_distance.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -19,22 +20,6 @@ toml::table parse_toml(std::string_view text, const std::string& source_name) {
 
 
 namespace {
-
-// Edit distance, for "did you mean" suggestions on unknown keys.
-std::size_t levenshtein(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = up;
-    }
-  }
-  return row[b.size()];
-}
 
 // True if `prefix` is `path` or an ancestor of it ("body[0]" of "body[0].velocity").
 bool is_path_prefix(std::string_view prefix, std::string_view path) {

@@ -9,11 +9,38 @@
 
 #include "analysis/chip_analysis.hpp"
 #include "cutting/cutting_resolution.hpp"
+#include "io/edit_distance.hpp"
 #include "io/input_error.hpp"
 #include "io/material_library.hpp"
 #include "io/toml_reader.hpp"
 
 namespace mpmcut {
+
+namespace {
+
+// The cells of one CSV line; a cell in double quotes may hold commas, and "" in it is one quote (as the tables
+// this program writes quote them: TextTable::write_csv).
+std::vector<std::string> split_csv_line(const std::string& line) {
+  std::vector<std::string> cells(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted) {
+      if (c != '"') cells.back() += c;
+      else if (i + 1 < line.size() && line[i + 1] == '"') cells.back() += line[++i];
+      else quoted = false;
+    } else if (c == '"' && cells.back().empty()) {
+      quoted = true;
+    } else if (c == ',') {
+      cells.emplace_back();
+    } else {
+      cells.back() += c;
+    }
+  }
+  return cells;
+}
+
+}  // namespace
 
 DataFile read_data_file(std::string_view text, const std::string& source) {
   DataFile f;
@@ -23,16 +50,23 @@ DataFile read_data_file(std::string_view text, const std::string& source) {
   for (std::string line; std::getline(in, line);) {
     ++line_number;
     if (!line.empty() && line.back() == '\r') line.pop_back();
+    // The byte-order mark that spreadsheet programs put at the start of a "CSV UTF-8" file is not text.
+    if (line_number == 1 && line.starts_with("\xEF\xBB\xBF")) line.erase(0, 3);
     if (line.empty() || line[0] == '#') continue;
-    std::vector<std::string> cells;
-    std::string cell;
-    for (std::istringstream ss(line); std::getline(ss, cell, ',');) cells.push_back(cell);
-    if (line.back() == ',') cells.push_back("");
+    const std::vector<std::string> cells = split_csv_line(line);
     if (f.columns.empty()) {
+      for (std::size_t i = 0; i < cells.size(); ++i)
+        if (std::find(cells.begin(), cells.begin() + static_cast<std::ptrdiff_t>(i), cells[i]) !=
+            cells.begin() + static_cast<std::ptrdiff_t>(i))
+          throw InputError(fmt::format("{}:{}: the column '{}' appears twice in the header line", source, line_number,
+                                       cells[i]));
       f.columns = cells;
       f.header_line = line_number;
       continue;
     }
+    if (cells.size() > f.columns.size())
+      throw InputError(fmt::format("{}:{}: {} cells, but the header line (line {}) names {} columns", source,
+                                   line_number, cells.size(), f.header_line, f.columns.size()));
     DataFile::Row row;
     row.line = line_number;
     for (std::size_t i = 0; i < f.columns.size(); ++i) row.cells[f.columns[i]] = i < cells.size() ? cells[i] : "";
@@ -68,15 +102,42 @@ const std::vector<std::string>& required_force_columns() {
   return columns;
 }
 
+// The columns a force file may have besides the required ones (the built-in file's own extra ones included).
+const std::vector<std::string>& optional_force_columns() {
+  static const std::vector<std::string> columns{
+      "n_tests",     "Fc_min_N", "Fc_max_N",      "Ff_min_N",          "Ff_max_N", "chip_thickness_um",
+      "status",      "rake_deg", "clearance_deg", "width_mm",          "tests",    "chip_thickness_n"};
+  return columns;
+}
+
 std::vector<MeasuredForces> read_measured_forces(const DataFile& file) {
   file.require_columns(required_force_columns());
+  if (file.rows.empty())
+    throw InputError(fmt::format("{}:{}: no data rows after the header line: nothing to compare with", file.source,
+                                 file.header_line));
+  // A misspelt optional column (widht_mm) would be ignored silently and change the comparison (b = 1 mm assumed):
+  // a column close to a known one is an error; other extra columns (notes) are left alone.
+  for (const std::string& column : file.columns) {
+    const auto known = [&](const std::vector<std::string>& names) {
+      return std::find(names.begin(), names.end(), column) != names.end();
+    };
+    if (known(required_force_columns()) || known(optional_force_columns())) continue;
+    for (const auto* names : {&required_force_columns(), &optional_force_columns()})
+      for (const std::string& name : *names)
+        if (levenshtein(column, name) <= 2)
+          throw InputError(fmt::format("{}:{}: column '{}' is not one this file format knows: did you mean '{}'?",
+                                       file.source, file.header_line, column, name));
+  }
   std::vector<MeasuredForces> out;
   for (const DataFile::Row& r : file.rows) {
     MeasuredForces m;
     m.line = r.line;
     for (const std::string& key : required_force_columns())
-      if (!std::isfinite(file.number(r, key)))
-        throw InputError(fmt::format("{}:{}: column '{}': a value is needed in every row", file.source, r.line, key));
+      if (const double x = file.number(r, key); !std::isfinite(x))
+        throw InputError(std::isnan(x) && r.cells.at(key).empty()
+                             ? fmt::format("{}:{}: column '{}': a value is needed in every row", file.source, r.line, key)
+                             : fmt::format("{}:{}: column '{}': must be a finite number, got \"{}\"", file.source,
+                                           r.line, key, r.cells.at(key)));
     m.h_mm = file.number(r, "h_mm");
     m.vc_m_per_min = file.number(r, "vc_m_per_min");
     m.fc_N = file.number(r, "Fc_mean_N");

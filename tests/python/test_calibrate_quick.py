@@ -48,6 +48,16 @@ def main(binary, scratch):
     os.makedirs(scratch)
     out = os.path.join(scratch, "cal")
     calibrate(binary, out)
+    # A directory that is not a calibration's is neither written into nor deleted with --force (it was deleted).
+    precious = os.path.join(scratch, "precious")
+    os.makedirs(precious)
+    with open(os.path.join(precious, "thesis.tex"), "w") as f:
+        f.write("x")
+    for extra in ([], ["--force"]):
+        p = subprocess.run([binary, "calibrate", CONFIG, "--out", precious, *extra], capture_output=True, text=True,
+                           timeout=60)
+        if p.returncode != 2 or "holds no calibration.toml" not in p.stderr or os.listdir(precious) != ["thesis.tex"]:
+            fail(f"calibrate {extra} into a foreign directory: exit {p.returncode}, {p.stderr}, {os.listdir(precious)}")
     with open(os.path.join(out, "evaluations.csv"), newline="") as f:
         rows = list(csv.DictReader(f))
     if [r["stage"] for r in rows] != ["global", "global", "local"]:

@@ -255,7 +255,7 @@ def check_measurements(binary, scratch):
     # 220 N on a 2 mm wide cut: 110 N/mm.
     if len(rows) != 4 or float(rows[0]["measured_mean"]) != 110.0 or data not in rows[0]["source"]:
         fail(f"validation.csv with --measurements: {rows}")
-    for text, words in (("0.05,120,110,60,20\n", ["my_bad.csv:1", "missing column(s) 'edge_radius_um'"]),
+    for text, words in (("0.05,120,110,60\n", ["my_bad.csv:1", "missing column(s) 'edge_radius_um'"]),
                         ("0.05,120,110,60,20,50\n", ["my_bad.csv:3", "rake_deg", "(-45, 45)"]),
                         ("0.05,120,110,60,20,5\n0.05,120,111,61,20,5\n", ["my_bad.csv:4", "on line 3 already"])):
         bad_file = os.path.join(scratch, "my_bad.csv")

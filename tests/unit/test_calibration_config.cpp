@@ -215,6 +215,37 @@ TEST(MeasuredForces, ToolAnglesOfARowReachItsIdAndCaseFile) {
   }
 }
 
+// A user's force file as spreadsheets write it, and the mistakes that used to pass silently (a found review).
+TEST(MeasuredForces, FilesFromSpreadsheetsReadAndMalformedOnesAreErrorsAtTheirLine) {
+  const std::string head = "h_mm,vc_m_per_min,Fc_mean_N,Ff_mean_N,edge_radius_um";
+  // A UTF-8 byte-order mark (Excel's "CSV UTF-8") and a quoted cell holding a comma.
+  const DataFile bom = read_data_file("\xEF\xBB\xBF" + head + ",status\n0.1,100,200,120,30,\"ok, checked\"\n", "bom.csv");
+  const auto rows = read_measured_forces(bom);
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_DOUBLE_EQ(rows[0].h_mm, 0.1);
+  EXPECT_EQ(rows[0].status, "ok, checked");
+  const auto error = [](const std::string& text) {
+    try {
+      (void)read_measured_forces(read_data_file(text, "mine.csv"));
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  const auto expect = [&](const std::string& text, const std::string& what) {
+    const std::string message = error(text);
+    EXPECT_NE(message.find(what), std::string::npos) << "'" << what << "' not in: '" << message << "'";
+  };
+  expect(head + "\n", "mine.csv:1: no data rows after the header line");
+  expect(head + ",h_mm\n0.1,100,200,120,30,0.2\n", "mine.csv:1: the column 'h_mm' appears twice");
+  expect(head + "\n0.1,100,200,120,30,7\n", "mine.csv:2: 6 cells, but the header line (line 1) names 5 columns");
+  expect(head + ",widht_mm\n0.1,100,200,120,30,2\n", "column 'widht_mm' is not one this file format knows: did "
+                                                     "you mean 'width_mm'?");
+  expect(head + "\n0.1,100,nan,120,30\n", "mine.csv:2: column 'Fc_mean_N': must be a finite number, got \"nan\"");
+  expect(head + "\n0.1,100,,120,30\n", "mine.csv:2: column 'Fc_mean_N': a value is needed in every row");
+  EXPECT_EQ(error(head + ",my_notes\n0.1,100,200,120,30,lathe 2\n"), "");  // a column of notes is left alone
+}
+
 // Calibrate picks a row by h and speed, and by the tool's angles where rows of one h and speed differ in them; an
 // entry that matches two rows is an error naming their lines.
 TEST(CalibrationConfig, ToolAnglesPickARowAmongRowsOfOneCondition) {
