@@ -244,6 +244,7 @@ TEST(MeasuredForces, FilesFromSpreadsheetsReadAndMalformedOnesAreErrorsAtTheirLi
   expect(head + "\n0.1,100,nan,120,30\n", "mine.csv:2: column 'Fc_mean_N': must be a finite number, got \"nan\"");
   expect(head + "\n0.1,100,,120,30\n", "mine.csv:2: column 'Fc_mean_N': a value is needed in every row");
   EXPECT_EQ(error(head + ",my_notes\n0.1,100,200,120,30,lathe 2\n"), "");  // a column of notes is left alone
+  EXPECT_EQ(error(head + ",notes\n0.1,100,200,120,30,lathe 2\n"), "");  // two letters from "tests", not a typo
 }
 
 // Calibrate picks a row by h and speed, and by the tool's angles where rows of one h and speed differ in them; an
