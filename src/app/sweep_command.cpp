@@ -108,18 +108,20 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
       throw InputError(fmt::format("--vary {}: the sweep's grid sets it; use --speeds (m/s) or --feeds (m)", own));
   if (varied.key == "cutting.cell_size" && !o.cells_per_feed.empty())
     throw InputError("--vary cutting.cell_size with --cells-per-feed: give the resolution one way");
-  // Every value of the varied key must make a valid case: checked before anything runs (file, key, allowed range).
-  if (!varied.key.empty())
-    for (const std::string& value : varied.values) {
-      std::vector<std::string> with = o.overrides;
-      with.push_back(varied.key + "=" + value);
-      try {
-        (void)load_case(o.case_file, with);
-      } catch (const InputError& e) {
-        throw InputError(fmt::format("--vary {}: the value {} makes a case that does not read: {}", varied.key, value,
-                                     e.what()));
-      }
+  // Every value of the grid and of the varied key must make a valid case: checked before anything runs (file, key,
+  // allowed range); `what` names the option and the value in the error.
+  const auto check_value_reads = [&](const std::string& what, const std::string& key, const std::string& value) {
+    std::vector<std::string> with = o.overrides;
+    with.push_back(key + "=" + value);
+    try {
+      (void)load_case(o.case_file, with);
+    } catch (const InputError& e) {
+      throw InputError(fmt::format("{} makes a case that does not read: {}", what, e.what()));
     }
+  };
+  if (!varied.key.empty())
+    for (const std::string& value : varied.values)
+      check_value_reads(fmt::format("--vary {}: the value {}", varied.key, value), varied.key, value);
   // The case itself (load_case checks it before anything runs) and its own feed.
   double own_feed_m = 0.0;
   {
@@ -140,17 +142,10 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
   given_once(o.speeds_m_per_s, "--speeds");
   given_once(o.feeds_m, "--feeds");
   given_once(o.cells_per_feed, "--cells-per-feed");
-  const auto check_grid_value = [&](const char* option, const char* key, double value) {
-    std::vector<std::string> with = o.overrides;
-    with.push_back(fmt::format("{}={}", key, value));
-    try {
-      (void)load_case(o.case_file, with);
-    } catch (const InputError& e) {
-      throw InputError(fmt::format("{} {:g}: the value makes a case that does not read: {}", option, value, e.what()));
-    }
-  };
-  for (double v : o.speeds_m_per_s) check_grid_value("--speeds", "cutting.cutting_speed", v);
-  for (double h : o.feeds_m) check_grid_value("--feeds", "cutting.uncut_chip_thickness", h);
+  for (double v : o.speeds_m_per_s)
+    check_value_reads(fmt::format("--speeds {:g}: the value", v), "cutting.cutting_speed", fmt::format("{}", v));
+  for (double h : o.feeds_m)
+    check_value_reads(fmt::format("--feeds {:g}: the value", h), "cutting.uncut_chip_thickness", fmt::format("{}", h));
   std::vector<double> feeds_m = o.feeds_m;
   if (feeds_m.empty()) feeds_m = {own_feed_m};
   fs::create_directories(out / "logs");

@@ -103,6 +103,10 @@ void record_run(const ValidateOptions& o, const fs::path& out, const std::string
 int run_validation(const ValidateOptions& o) {
   const fs::path out = o.out_dir.empty() ? fs::path(o.quick ? "results/validation_quick" : "results/validation")
                                          : fs::path(o.out_dir);
+  if (!o.records_dir.empty() && fs::exists(o.records_dir) && !fs::is_directory(o.records_dir))
+    throw InputError(fmt::format("--records {}: not a directory (the run records are kept in a directory, one "
+                                 "folder per condition)",
+                                 o.records_dir));
   const ConditionRunSettings settings = validation::run_settings(o);
   const validation::ForceData data = validation::force_data(o);
   std::vector<Condition> conditions = validation::matrix_conditions(settings, data);

@@ -106,10 +106,6 @@ ConditionRunSettings run_settings(const Options& o) {
         {"--tool-heat-transfer-coefficient", o.tool_heat_transfer_coefficient},
         {"--tool-temperature", o.tool_temperature}})
     if (value && !std::isfinite(*value)) throw InputError(fmt::format("{} {}: a finite number is needed", option, *value));
-  if (!o.records_dir.empty() && std::filesystem::exists(o.records_dir) && !std::filesystem::is_directory(o.records_dir))
-    throw InputError(fmt::format("--records {}: not a directory (the run records are kept in a directory, one "
-                                 "folder per condition)",
-                                 o.records_dir));
   ConditionRunSettings s;
   s.quick = o.quick;
   s.cells_per_feed = o.cells_per_feed;
