@@ -7,11 +7,14 @@
 #include <atomic>
 #include <cstring>
 
+#include "run/repeated_signal.hpp"
+
 namespace mpmcut {
 
 namespace {
 
 StopToken g_stop;
+RepeatedSignalFilter g_repeats;
 // Children to terminate on an immediate exit: +pid (the process) or -pid (its group), 0 = free.
 // A fixed array of lock-free atomics: the signal handler may read it at any moment.
 constexpr int kMaxChildren = 64;
@@ -23,6 +26,7 @@ void say(const char* text) {
 }
 
 extern "C" void on_stop_signal(int) {
+  if (!g_repeats.is_new_stop()) return;  // the same stop, delivered twice
   if (g_stop.request_stop()) return;  // the run loop stops after this step
   for (auto& child : g_children) {
     const pid_t target = child.load();

@@ -10,6 +10,7 @@
 #include <thread>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
 #include "app/plot_command.hpp"
@@ -339,13 +340,37 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
         std::cerr << "warning: " << tool << " failed (exit status " << code << ")\n";
     }
   }
-  if (!completed) return 130;
+  if (!completed) {
+    // The cases the stop came before: the console names them, as sweep.md does ("not run"), so that a user who
+    // reads only the console knows what a rerun will still run.
+    std::vector<std::string> not_started;
+    for (std::size_t i = 0; i < cases.size(); ++i)
+      if (runs[i].exit_code == -1) not_started.push_back(runs[i].name);
+    if (!not_started.empty())
+      std::cerr << fmt::format("mpmcut sweep: interrupted; {} of {} cases not started: {} (a rerun with the same "
+                               "options runs them and resumes the stopped ones)\n",
+                               not_started.size(), cases.size(), fmt::join(not_started, ", "));
+    return 130;
+  }
   if (failed) {
     std::cerr << fmt::format("mpmcut sweep: {} of {} cases did not complete (see sweep.md and logs/)\n", failed,
                              cases.size());
     return 1;
   }
   return 0;
+}
+
+// A finite value > 0 (CLI11's PositiveNumber let NaN through and named its upper bound, the largest double, in
+// 309 digits).
+CLI::Validator positive_number() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        double value = 0.0;
+        if (!CLI::detail::lexical_cast(text, value) || !(value > 0.0) || !std::isfinite(value))
+          return fmt::format("Value {} is not a positive, finite number", text);
+        return {};
+      },
+      "POSITIVE");
 }
 
 }  // namespace
@@ -357,10 +382,10 @@ void add_sweep_command(CLI::App& app) {
                "then tabulate (sweep.csv, sweep.md) and plot the results");
   sweep->add_option("case", o->case_file, "Cutting case file (TOML with a [cutting] table)")->required();
   sweep->add_option("--speeds", o->speeds_m_per_s, "Cutting speeds in m/s, comma separated, e.g. 2,5,10,20,50,100")
-      ->required()->delimiter(',')->check(CLI::PositiveNumber);
+      ->required()->delimiter(',')->check(positive_number());
   sweep->add_option("--feeds", o->feeds_m,
                     "Uncut chip thicknesses (feeds) in m, comma separated, e.g. 0.05e-3,0.1e-3 (default: the case's own)")
-      ->delimiter(',')->check(CLI::PositiveNumber);
+      ->delimiter(',')->check(positive_number());
   sweep->add_option("--cells-per-feed", o->cells_per_feed,
                     "Resolutions, cells across the uncut chip thickness, comma separated (cell = h/N), e.g. 8,12,16,24 "
                     "for a convergence study (default: the case's cell size)")

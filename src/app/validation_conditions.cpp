@@ -121,6 +121,10 @@ ConditionRunSettings run_settings(const Options& o) {
     if (key.empty() || !std::isfinite(value) || end == nullptr || *end != '\0')
       throw InputError(fmt::format("--material-key '{}': expected KEY=VALUE with a finite number, e.g. jc_C=0.035",
                                    assignment));
+    for (const auto& [given, given_value] : s.material_overrides)
+      if (given == key)
+        throw InputError(fmt::format("--material-key {} is given twice ({:g} and {:g}): give each key once", key,
+                                     given_value, value));
     s.material_overrides.emplace_back(key, value);
   }
   if (o.friction) {

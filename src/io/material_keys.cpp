@@ -139,6 +139,17 @@ void write_material_keys(const MaterialParameters& m, std::ostream& out) {
   for_each_parameter_table([&](const auto& table) { write_table(table, m, out); });
 }
 
+std::string material_key_unit(std::string_view key) {
+  std::string unit;
+  for_each_parameter_table([&]<class P>(const ParameterTable<P>& table) {
+    for (const Parameter<P>& row : table.parameters)
+      if (row.key == key && row.number && row.unit != "-") unit = std::string(row.unit);
+  });
+  for (const AlternativeKey& a : alternative_keys())
+    if (a.key == key && a.unit != "-") unit = std::string(a.unit);
+  return unit;
+}
+
 std::string material_keys_markdown() {
   std::string out =
       "| key | unit | default | allowed | meaning |\n"

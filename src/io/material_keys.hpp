@@ -4,6 +4,7 @@
 // writing them back, and their reference table in docs/input.md (`mpmcut keys --markdown`).
 #include <ostream>
 #include <string>
+#include <string_view>
 
 #include "io/toml_reader.hpp"
 #include "physics/material_parameters.hpp"
@@ -20,6 +21,10 @@ void check_material_keys(TableReader& t, const MaterialParameters& m);
 
 // "key = value" lines for every parameter, in table order.
 void write_material_keys(const MaterialParameters& m, std::ostream& out);
+
+// The unit of a numeric [[material]] key as the reference table writes it ("Pa", "J/m^2"); empty for a ratio
+// ("-") and for a key that is not a numeric parameter.
+std::string material_key_unit(std::string_view key);
 
 // The markdown table of every [[material]] key: unit, default, allowed values, meaning.
 std::string material_keys_markdown();

@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 #include <nlopt.h>
 #include <nlohmann/json.hpp>
+#include <toml++/toml.h>
 
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
@@ -34,6 +35,23 @@ constexpr double kMissingChipThicknessError = 1.0;
 
 // The condition's result directory: the id validate gives it, less validate's "forces_" prefix.
 std::string condition_id(const MeasuredForces& m) { return force_condition_id(m).substr(std::string("forces_").size()); }
+
+// A parameter's column in evaluations.csv: its name with its unit as the other columns spell units (jc_A_Pa,
+// fracture_energy_J_per_m2, thermal_conductivity_W_per_m_K); a ratio and friction go bare, as the other
+// dimensionless columns do.
+std::string column_name(const CalibrationParameter& p) {
+  if (p.unit.empty()) return p.name;
+  std::string unit;
+  std::string_view u = p.unit;
+  if (u.starts_with("1/")) u.remove_prefix(1);  // 1/s -> per_s
+  for (const char c : u) {
+    if (c == '/') unit += "_per_";
+    else if (c == ' ') unit += '_';
+    else if (c != '(' && c != ')' && c != '^') unit += c;
+  }
+  if (unit.starts_with('_')) unit.erase(0, 1);
+  return p.name + "_" + unit;
+}
 
 CuttingCondition cutting_condition(const MeasuredForces& m) {
   CuttingCondition c = force_condition(m);
@@ -338,7 +356,7 @@ void Calibrator::append_to_cache(const std::string& key, const Evaluation& e) {
 void Calibrator::write_evaluations_csv() const {
   write_file_atomically(out_ / "evaluations.csv", [&](std::ostream& s) {
     s << "evaluation,stage";
-    for (const CalibrationParameter& p : c_.parameters) s << "," << p.name;
+    for (const CalibrationParameter& p : c_.parameters) s << "," << column_name(p);
     s << ",objective,best_objective";
     for (const MeasuredForces& m : c_.training) {
       const std::string id = condition_id(m);
@@ -451,11 +469,11 @@ void Calibrator::write_results(const Evaluation& best, const std::vector<Conditi
            "are not converged and this set must not be used.**\n\n";
     s << fmt::format("Configuration `{}`, {}. Base set `{}`; free parameters:\n\n", c_.file.string(), date,
                      c_.base_material);
-    s << "| parameter | min | max | start | scale | best |\n|---|---|---|---|---|---|\n";
+    s << "| parameter | unit | min | max | start | scale | best |\n|---|---|---|---|---|---|---|\n";
     for (std::size_t i = 0; i < c_.parameters.size(); ++i) {
       const CalibrationParameter& p = c_.parameters[i];
-      s << fmt::format("| {} | {:g} | {:g} | {:g} | {} | {:.6g} |\n", p.name, p.min, p.max, p.start,
-                       p.log_scale ? "log" : "linear", best.values[i]);
+      s << fmt::format("| {} | {} | {:g} | {:g} | {:g} | {} | {:.6g} |\n", p.name, p.unit.empty() ? "–" : p.unit,
+                       p.min, p.max, p.start, p.log_scale ? "log" : "linear", best.values[i]);
     }
     s << "\n## Objective\n\n" << objective_text << ". A failed run counts as a relative error of "
       << kFailedRunError << " in each of its quantities; a measured chip thickness that the chip analysis could not "
@@ -538,6 +556,16 @@ int Calibrator::run() {
   return held_back_complete ? 0 : 1;
 }
 
+// Whether two configuration texts hold the same keys and values: comments, blank lines, the order of keys and the
+// spelling of numbers (1e-3, 0.001) do not change the problem a calibration solves.
+bool same_configuration(const std::string& a, const std::string& b) {
+  try {
+    return toml::parse(a) == toml::parse(b);
+  } catch (const toml::parse_error&) {
+    return a == b;
+  }
+}
+
 }  // namespace
 
 int run_calibration(const CalibrationConfig& config, const fs::path& out, int jobs) {
@@ -551,7 +579,7 @@ int run_calibration(const CalibrationConfig& config, const fs::path& out, int jo
     std::ifstream old(copy);
     std::stringstream old_text;
     old_text << old.rdbuf();
-    if (old_text.str() != text.str())
+    if (!same_configuration(old_text.str(), text.str()))
       throw InputError(fmt::format("{}: holds a calibration of a different configuration than {} (differences "
                                    "would make its cache of evaluations wrong); use another --out, or --force to "
                                    "start this one afresh",

@@ -20,6 +20,7 @@ struct CalibrationParameter {
   double start = 0;         // the base set's value unless given
   bool log_scale = false;   // searched uniformly in log(value) (bounds > 0)
   std::string location;     // "config.toml:12:1" for messages
+  std::string unit;         // the key's unit, e.g. "Pa" (io/material_keys.hpp); empty for a ratio and for friction
 };
 
 // A parameter's value at the optimizer's variable u in [0, 1] (uniform, or uniform in log for log_scale), and back.

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <nlopt.h>
 
+#include "io/material_keys.hpp"
 #include "io/material_library.hpp"
 #include "io/scene_writer.hpp"
 #include "io/toml_reader.hpp"
@@ -121,6 +122,7 @@ CalibrationConfig read_calibration_config(const fs::path& file, std::string_view
     q.name = p.string("name", "");
     q.location = p.location("name");
     const bool friction = q.name == "friction";
+    if (!friction) q.unit = material_key_unit(q.name);
     if (!friction && !keys.contains(q.name))
       p.fail("name", fmt::format("unknown parameter \"{}\": a free parameter is \"friction\" or a numeric key of the "
                                  "material set \"{}\": {}",

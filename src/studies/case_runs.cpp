@@ -19,6 +19,7 @@
 #include <fmt/format.h>
 
 #include "io/atomic_file.hpp"
+#include "run/repeated_signal.hpp"
 #include "run/run_summary.hpp"
 #include "studies/study_progress.hpp"
 
@@ -29,7 +30,10 @@ namespace {
 namespace fs = std::filesystem;
 
 volatile std::sig_atomic_t g_stop_signals = 0;
-void on_stop_signal(int) { g_stop_signals = g_stop_signals + 1; }
+RepeatedSignalFilter g_repeats;
+void on_stop_signal(int) {
+  if (g_repeats.is_new_stop()) g_stop_signals = g_stop_signals + 1;
+}
 
 std::string self_executable() {
   std::error_code ec;
@@ -80,6 +84,21 @@ std::string exit_text(int code) {
   if (code > 128) return fmt::format("killed by signal {}", code - 128);
   return fmt::format("failed (exit status {})", code);
 }
+
+}  // namespace
+
+std::string finished_case_text(const ChildRun& run) {
+  if (run.exit_code == 130) {
+    try {
+      if (read_summary(result_dir_of_args(run.args) / "summary.json").status == "complete")
+        return "complete (the stop came after its last step)";
+    } catch (const std::exception&) {
+    }
+  }
+  return exit_text(run.exit_code);
+}
+
+namespace {
 
 std::string last_lines(const fs::path& file, int count) {
   std::ifstream in(file);
@@ -146,6 +165,7 @@ constexpr double kProgressReportIntervalS = 600.0;
 
 bool run_children(std::vector<ChildRun>& runs, int jobs, bool print_progress) {
   g_stop_signals = 0;
+  g_repeats.reset();
   struct sigaction action {}, old_int{}, old_term{};
   action.sa_handler = on_stop_signal;
   sigemptyset(&action.sa_mask);
@@ -179,7 +199,7 @@ bool run_children(std::vector<ChildRun>& runs, int jobs, bool print_progress) {
       const int sig = forwarded == 1 ? SIGINT : SIGKILL;
       if (print_progress)
         std::cerr << (sig == SIGINT ? "\ninterrupted: stopping the running cases (they write a checkpoint; "
-                                      "Ctrl-C again to kill them)\n"
+                                      "Ctrl-C again, half a second or more later, to kill them)\n"
                                     : "\nkilling the running cases\n");
       for (const auto& [pid, info] : running) kill(-pid, sig);
     }
@@ -196,11 +216,12 @@ bool run_children(std::vector<ChildRun>& runs, int jobs, bool print_progress) {
       run.exit_code = r < 0 ? 127 : WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
       run.wall_time_s = std::chrono::duration<double>(clock::now() - it->second.second).count();
       ++finished;
-      if (print_progress)
-        std::cout << fmt::format("[{}/{}] {}: {} ({:.1f} s){}\n", finished, runs.size(), run.name,
-                                 exit_text(run.exit_code), run.wall_time_s,
-                                 run.exit_code == 0 ? "" : ", log: " + run.log_file.string())
+      if (print_progress) {
+        const std::string text = finished_case_text(run);
+        std::cout << fmt::format("[{}/{}] {}: {} ({:.1f} s){}\n", finished, runs.size(), run.name, text,
+                                 run.wall_time_s, text.starts_with("complete") ? "" : ", log: " + run.log_file.string())
                   << std::flush;
+      }
       if (run.on_finished) run.on_finished(run);
       it = running.erase(it);
       reaped = true;

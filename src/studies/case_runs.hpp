@@ -25,6 +25,11 @@ struct ChildRun {
   std::function<void(const ChildRun&)> on_finished;
 };
 
+// What the console says of a finished case: "complete", "interrupted", "failed (exit status 1)"... A stop that
+// reached a case after its last step (exit 130) leaves its results complete (docs/reliability.md, "Signals"):
+// then "complete (the stop came after its last step)", as its summary and the study's table say.
+std::string finished_case_text(const ChildRun& run);
+
 // Runs the children, at most `jobs` at a time, each as /proc/self/exe in its own process group: the
 // program the study was started as, even if its file is replaced (rebuilt) while the study runs.
 // SIGINT/SIGTERM to this process are passed on once to the running children (which checkpoint and stop);

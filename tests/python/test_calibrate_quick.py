@@ -11,7 +11,8 @@ condition, a budget of 3 evaluations: 2 of CRS2, then BOBYQA from the best point
   - resume after a kill -9 (cache.jsonl cut to its first evaluation plus half a line): one evaluation
     is evaluated again, its complete runs kept (not rerun), the other replays, and evaluations.csv comes out
     identical (deterministic for a seed);
-  - a second start over a complete directory runs nothing (neither evaluations nor held-back runs).
+  - a second start over a complete directory runs nothing (neither evaluations nor held-back runs), also from a copy
+    of the configuration with a comment added and a number respelt; a changed bound is refused.
 """
 import csv
 import math
@@ -29,8 +30,8 @@ CONFIG = os.path.join(HERE, "data", "calibration_quick.toml")
 DATA = os.path.join(HERE, "..", "..", "data", "experiments", "ti64_klippel2024_orthogonal_forces.csv")
 
 
-def calibrate(binary, out, *extra):
-    p = subprocess.run([binary, "calibrate", CONFIG, "--out", out, "--jobs", "2", *extra],
+def calibrate(binary, out, *extra, config=CONFIG):
+    p = subprocess.run([binary, "calibrate", config, "--out", out, "--jobs", "2", *extra],
                        capture_output=True, text=True, timeout=300)
     print(p.stdout, p.stderr, sep="\n")
     if p.returncode != 0:
@@ -73,17 +74,17 @@ def main(binary, scratch):
         # The forces in the CSV are rounded to 6 digits.
         if abs(j - float(r["objective"])) > 1e-4 * j:
             fail(f"evaluation {r['evaluation']}: objective {r['objective']} != recomputed {j}")
-        if not (700e6 <= float(r["jc_A"]) <= 1000e6 and 0.1 <= float(r["friction"]) <= 0.6):
+        if not (700e6 <= float(r["jc_A_Pa"]) <= 1000e6 and 0.1 <= float(r["friction"]) <= 0.6):
             fail(f"evaluation {r['evaluation']} outside the bounds: {r}")
-    if float(rows[0]["jc_A"]) != 862e6 or float(rows[0]["friction"]) != 0.35:
+    if float(rows[0]["jc_A_Pa"]) != 862e6 or float(rows[0]["friction"]) != 0.35:
         fail(f"the first point is not the start (ti64-cutting's jc_A, friction 0.35): {rows[0]}")
     best = min(rows[:2], key=lambda r: float(r["objective"]))
-    if (rows[2]["jc_A"], rows[2]["friction"]) != (best["jc_A"], best["friction"]):
+    if (rows[2]["jc_A_Pa"], rows[2]["friction"]) != (best["jc_A_Pa"], best["friction"]):
         fail("the local stage did not start from the best global point")
     with open(os.path.join(out, "best_material.toml"), "rb") as f:
         toml = tomllib.load(f)
     m = toml["material"][0]
-    if m["name"] != "ti64-test-fit" or m["library"] != "ti64-cutting" or m["jc_A"] != float(best["jc_A"]):
+    if m["name"] != "ti64-test-fit" or m["library"] != "ti64-cutting" or m["jc_A"] != float(best["jc_A_Pa"]):
         fail(f"best_material.toml: {m}")
     text = read(os.path.join(out, "best_material.toml"))
     for word in ("Data:", "Objective:", "Budget:", "friction = ", "seed 7"):
@@ -117,9 +118,21 @@ def main(binary, scratch):
     for name in sorted(os.listdir(logs)):
         if not name.endswith(".analyze.log") and "already holds the complete run" not in read(os.path.join(logs, name)):
             fail(f"the resumed evaluation ran {name[:-4]} again instead of keeping its complete run")
-    log = calibrate(binary, out, "--no-plots")
+    # The same configuration with a comment and a number respelt is the same problem: its cache holds (it was
+    # refused as "a different configuration"); a changed bound is another problem: refused.
+    same = os.path.join(scratch, "same.toml")
+    with open(same, "w") as f:
+        f.write("# the quick configuration, commented\n" + read(CONFIG).replace("min = 700e6", "min = 7.0e8"))
+    log = calibrate(binary, out, "--no-plots", config=same)
     if "(0 run now, 3 from the cache)" not in log or "held-back conditions at the best set" in log:
         fail("a complete calibration ran evaluations or the held-back runs again")
+    changed = os.path.join(scratch, "changed.toml")
+    with open(changed, "w") as f:
+        f.write(read(CONFIG).replace("max = 1000e6", "max = 1100e6"))
+    p = subprocess.run([binary, "calibrate", changed, "--out", out, "--no-plots"], capture_output=True, text=True,
+                       timeout=60)
+    if p.returncode != 2 or "different configuration" not in p.stderr:
+        fail(f"a changed bound was not refused: exit {p.returncode}, {p.stderr}")
     print("PASS")
 
 

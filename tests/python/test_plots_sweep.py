@@ -134,13 +134,17 @@ def check_vary(binary, case, scratch):
     # The grid's own values too (a repeated one made two cases share a directory and broke the convergence table;
     # NaN and a feed in mm ran and failed case by case).
     for args, words in ((["--speeds", "20,20"], ["--speeds 20", "given twice"]),
-                        (["--speeds", "nan"], ["--speeds nan", "finite"]),
+                        (["--speeds", "nan"], ["--speeds", "nan", "finite"]),
+                        (["--speeds", "-1"], ["--speeds", "-1", "positive"]),
+                        (["--speeds", "20", "--feeds", "0"], ["--feeds", "0", "positive"]),
                         (["--speeds", "20", "--feeds", "0.2"], ["--feeds 0.2", "(0, 0.1) m"]),
                         (["--speeds", "20", "--cells-per-feed", "4,8,8"], ["--cells-per-feed 8", "given twice"])):
         p = subprocess.run([binary, "sweep", case, "--out", out + "_bad", *args], capture_output=True, text=True,
                            timeout=60)
         if p.returncode != 2 or not all(w in p.stderr for w in words) or os.path.exists(out + "_bad"):
             fail(f"sweep {args}: exit {p.returncode}, expected 2 naming {words} before any run: {p.stderr}")
+        if len(p.stderr) > 300:  # CLI11's bound of a positive number was the largest double in 309 digits
+            fail(f"sweep {args}: a message of {len(p.stderr)} characters: {p.stderr}")
 
 
 def check_chip_over_time(case_dir, row):

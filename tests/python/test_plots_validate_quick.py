@@ -359,6 +359,10 @@ def main(binary, scratch):
         bad = validate(binary, "--list", "--material-key", key, "--out", keyed, expect=2)
         if not all(w in bad.stderr for w in words):
             fail(f"--material-key {key}: the error must name {words}: {bad.stderr}")
+    bad = validate(binary, "--list", "--material-key", "jc_A=800e6", "--material-key", "jc_A=900e6", "--out", keyed,
+                   expect=2)
+    if not all(w in bad.stderr for w in ("--material-key jc_A", "given twice", "8e+08", "9e+08")):
+        fail(f"a key given twice: the error must name it and both values: {bad.stderr}")
 
     check_measurements(binary, scratch)
 

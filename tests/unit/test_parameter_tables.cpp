@@ -112,6 +112,17 @@ TEST(ParameterTables, RulesAndSwitchesBindReaderAndPhysicsAlike) {
 }
 
 // What the writer writes, the reader reads back to an equal material: every table key is written.
+// The unit of a key as the reference table gives it: what a calibration's evaluations.csv names its columns with.
+TEST(ParameterTables, KeyUnitIsTheTablesUnit) {
+  EXPECT_EQ(material_key_unit("jc_A"), "Pa");
+  EXPECT_EQ(material_key_unit("fracture_energy"), "J/m^2");
+  EXPECT_EQ(material_key_unit("reference_strain_rate"), "1/s");
+  EXPECT_EQ(material_key_unit("melting_temperature"), "K");
+  EXPECT_EQ(material_key_unit("jc_C"), "");  // a ratio
+  EXPECT_EQ(material_key_unit("model"), "");  // not a number
+  EXPECT_EQ(material_key_unit("no_such_key"), "");
+}
+
 TEST(ParameterTables, WriterWritesEveryKeyTheReaderReads) {
   const MaterialParameters m = everything_on();
   std::ostringstream text;

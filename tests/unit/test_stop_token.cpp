@@ -1,7 +1,12 @@
 // The stop token (src/run/stop_token.hpp): a request during a run loop is honoured once, cleanly; one
 // outside a loop, or a second one, tells a signal handler to exit at once; a loop forgets earlier requests.
+// The repeated-signal filter (src/run/repeated_signal.hpp): one stop delivered twice counts once.
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <thread>
+
+#include "run/repeated_signal.hpp"
 #include "run/stop_token.hpp"
 
 namespace mpmcut {
@@ -18,6 +23,18 @@ TEST(StopToken, FirstRequestInALoopStopsItCleanly) {
     EXPECT_FALSE(token.request_stop());    // a second request: exit at once
   }
   EXPECT_FALSE(token.request_stop());  // after the loop: exit at once
+}
+
+TEST(RepeatedSignalFilter, ASignalWithinTheWindowIsTheSameStop) {
+  RepeatedSignalFilter filter;
+  EXPECT_TRUE(filter.is_new_stop());
+  EXPECT_FALSE(filter.is_new_stop());  // at once: timeout's second delivery
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  EXPECT_FALSE(filter.is_new_stop());  // still within the window (and it does not extend it)
+  std::this_thread::sleep_for(std::chrono::duration<double>(RepeatedSignalFilter::kSameStopWindowS));
+  EXPECT_TRUE(filter.is_new_stop());   // a user's deliberate second Ctrl-C
+  filter.reset();
+  EXPECT_TRUE(filter.is_new_stop());   // a new study starts afresh
 }
 
 }  // namespace

@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include "run/run_summary.hpp"
+#include "studies/case_runs.hpp"
 #include "studies/study_progress.hpp"
 
 namespace mpmcut {
@@ -50,6 +52,28 @@ TEST(StudyProgress, LineNamesEachCaseWithItsShareTimeAndWhatIsLeft) {
       {{"v20mps_h0.1mm", 2040.0, 0.62, 1260.0}, {"v50mps_h0.1mm", 45.0, std::nullopt, std::nullopt}});
   EXPECT_EQ(line, "running: v20mps_h0.1mm 62 % (34 min, ~21 min left), v50mps_h0.1mm (45 s)");
   EXPECT_EQ(progress_report_line({{"long", 7200.0, 0.5, 7200.0}}), "running: long 50 % (2.0 h, ~2.0 h left)");
+}
+
+// A stop that reaches a case after its last step ends it with 130 while its results are complete: the console line
+// says complete, as its summary does (it said "interrupted").
+TEST(StudyProgress, ACaseStoppedAfterItsLastStepIsReportedComplete) {
+  const fs::path dir = fresh_dir("stopped_after_last_step");
+  ChildRun run;
+  run.args = {"run", "case.toml", "--out", dir.string()};
+  run.exit_code = 130;
+  RunSummary summary;
+  summary.status = "complete";
+  write_summary(dir / "summary.json", summary);
+  EXPECT_EQ(finished_case_text(run), "complete (the stop came after its last step)");
+  summary.status = "interrupted";
+  write_summary(dir / "summary.json", summary);
+  EXPECT_EQ(finished_case_text(run), "interrupted");
+  fs::remove(dir / "summary.json");
+  EXPECT_EQ(finished_case_text(run), "interrupted");  // no summary: the exit code alone
+  run.exit_code = 0;
+  EXPECT_EQ(finished_case_text(run), "complete");
+  run.exit_code = 1;
+  EXPECT_EQ(finished_case_text(run), "failed (exit status 1)");
 }
 
 }  // namespace
