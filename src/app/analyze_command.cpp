@@ -60,21 +60,13 @@ PvdSeries::Entry pick_snapshot(const std::vector<PvdSeries::Entry>& entries, con
 }
 
 int analyze(const fs::path& dir, const std::string& snapshot) {
-  if (!fs::is_directory(dir)) throw AnalyzeError(fmt::format("result directory '{}' does not exist", dir.string()));
-  const fs::path summary_file = dir / "summary.json", scene_file = dir / "scene.toml";
-  if (!fs::exists(summary_file) || !fs::exists(scene_file))
-    throw AnalyzeError(fmt::format("'{}' is not a result directory of mpmcut run (no summary.json and scene.toml)",
-                                   dir.string()));
   Case loaded;
   try {
-    loaded = load_case(scene_file);
+    loaded = load_cutting_result_scene(dir, "the chip analysis needs the cut's parameters");
   } catch (const InputError& e) {
-    throw AnalyzeError(fmt::format("cannot read the run's scene: {}", e.what()));
+    throw AnalyzeError(e.what());
   }
-  if (!loaded.cutting)
-    throw AnalyzeError(fmt::format("'{}' is not a cutting run (its scene.toml has no [cutting_process] record): "
-                                   "the chip analysis needs the cut's parameters",
-                                   dir.string()));
+  const fs::path summary_file = dir / "summary.json";
   RunSummary summary = read_summary(summary_file);
 
   const PvdSeries::Entry entry = pick_snapshot(snapshots_of(dir), snapshot);

@@ -126,26 +126,6 @@ int run_python_tool(const std::string& script, const std::vector<std::string>& a
   return run_and_wait(argv, false);
 }
 
-namespace {
-
-// Why `dir` cannot be plotted ("" if it can): the pictures are those of a cut (the chip, the tool, the forces).
-std::string not_a_cutting_run(const std::filesystem::path& dir) {
-  if (!std::filesystem::is_directory(dir)) return fmt::format("{} is not a directory", dir.string());
-  if (!std::filesystem::exists(dir / "summary.json") || !std::filesystem::exists(dir / "scene.toml"))
-    return fmt::format("'{}' is not a result directory of mpmcut run (no summary.json and scene.toml)", dir.string());
-  try {
-    if (!load_case(dir / "scene.toml").cutting)
-      return fmt::format("'{}' is not a cutting run (its scene.toml has no [cutting_process] record): the pictures "
-                         "are of a cut's chip, tool and forces; open its particles.pvd in ParaView instead",
-                         dir.string());
-  } catch (const InputError& e) {
-    return fmt::format("cannot read the run's scene: {}", e.what());
-  }
-  return "";
-}
-
-}  // namespace
-
 void add_plot_command(CLI::App& app) {
   struct Options {
     std::string result_dir;
@@ -159,8 +139,11 @@ void add_plot_command(CLI::App& app) {
   plot->add_option("--snapshots", options->snapshots,
                    "Snapshots to draw: last (default), all, or snapshot numbers N,M,... (the last is always drawn)");
   plot->callback([options]() {
-    if (const std::string why = not_a_cutting_run(options->result_dir); !why.empty()) {
-      std::cerr << "error: " << why << "\n";
+    try {
+      (void)load_cutting_result_scene(options->result_dir, "the pictures are of a cut's chip, tool and forces; open "
+                                                            "its particles.pvd in ParaView instead");
+    } catch (const InputError& e) {
+      std::cerr << "error: " << e.what() << "\n";
       throw CLI::RuntimeError(kExitInputError);
     }
     std::string why;

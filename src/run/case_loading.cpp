@@ -2,6 +2,8 @@
 
 #include <sstream>
 
+#include <fmt/format.h>
+
 #include "cutting/cutting_case.hpp"
 #include "io/embedded_text.hpp"
 #include "io/scene_parser.hpp"
@@ -37,6 +39,24 @@ Case parse_case(std::string_view toml_text, const std::string& source_name, cons
 
 Case load_case(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
   return parse_case(read_case_text(file), file.string(), overrides);
+}
+
+Case load_cutting_result_scene(const std::filesystem::path& dir, std::string_view needs_cut) {
+  if (!std::filesystem::is_directory(dir))
+    throw InputError(fmt::format("result directory '{}' does not exist (or is not a directory)", dir.string()));
+  if (!std::filesystem::exists(dir / "summary.json") || !std::filesystem::exists(dir / "scene.toml"))
+    throw InputError(
+        fmt::format("'{}' is not a result directory of mpmcut run (no summary.json and scene.toml)", dir.string()));
+  Case loaded;
+  try {
+    loaded = load_case(dir / "scene.toml");
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("cannot read the run's scene: {}", e.what()));
+  }
+  if (!loaded.cutting)
+    throw InputError(fmt::format("'{}' is not a cutting run (its scene.toml has no [cutting_process] record): {}",
+                                 dir.string(), needs_cut));
+  return loaded;
 }
 
 Case default_cutting_case(const std::vector<std::string>& overrides) {

@@ -22,6 +22,12 @@ Case load_case(const std::filesystem::path& file, const std::vector<std::string>
 Case parse_case(std::string_view toml_text, const std::string& source_name,
                 const std::vector<std::string>& overrides = {});
 
+// The scene of a cutting run's result directory, read back for the commands that work on one (analyze, plot).
+// Throws InputError with the reason when `dir` is not a directory, not a result of `mpmcut run` (no summary.json
+// and scene.toml), its scene.toml does not read, or it is not a cut (no [cutting_process] record: `needs_cut`
+// says what needs a cut, e.g. "the chip analysis needs the cut's parameters").
+Case load_cutting_result_scene(const std::filesystem::path& dir, std::string_view needs_cut);
+
 // The built-in demo (cases/elastic_demo.toml, compiled in): an elastic disk dropped onto a
 // frictionless floor, ~3k particles, a few seconds of run time. Used by `mpmcut run` without a case;
 // takes --set overrides like a case file.
