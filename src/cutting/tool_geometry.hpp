@@ -1,6 +1,8 @@
 #pragma once
 // The cutting tool as a rigid body: a wedge with rake angle, clearance angle and a rounded
 // cutting edge of radius r, represented exactly as a core polygon grown by r.
+#include <string>
+
 #include "solver/scene.hpp"
 #include "cutting/cutting_parameters.hpp"
 
@@ -8,12 +10,38 @@ namespace mpmcut {
 
 struct ToolPlacement {
   double machined_surface_y = 0.0;  // lowest point of the cutting edge, m
-  double leading_x = 0.0;           // x of the edge's leftmost point at the height of the edge centre, m
+  double uncut_surface_y = 0.0;     // the workpiece's top, m
+  // x of the tool's leftmost point between the machined and the uncut surface (the first point to meet the
+  // workpiece), m. For a rake >= 0 and an edge radius <= t0 that is the edge's leftmost point; a negative rake
+  // leans its rake face further left above the edge, and an edge radius > t0 meets the workpiece right of it.
+  double leading_x = 0.0;
 };
+
+// The tool's length (along the machined surface, from the cutting edge to its back) and height (up the rake face,
+// from the edge to its top), m.
+struct ToolSize {
+  double length = 0.0, height = 0.0;
+};
+
+// cutting.tool_length and tool_height, or where 0 the automatic sizes: length max(3 t0, 0.3 mm), height max(4 t0,
+// 0.4 mm), both at least 4 edge radii, grown where the rake angle, the clearance angle or the edge radius needs
+// it for the outline to be a tool (tool_size_problem). The automatic sizes are a tool at every accepted angle
+// and radius.
+ToolSize tool_size(const CuttingParameters& c);
+
+// Why a tool of this size cannot be built, and at which [cutting] key; an empty message when it can. The outline
+// must be a simple polygon (the rake face must not lean past the back, the back must rise above the end of the
+// flank), the rounded edge must leave a flat rake face and flank (the core polygon of the rounding keeps every
+// edge), and the rake face must reach 2 t0 up, above the chip.
+struct ToolSizeProblem {
+  std::string key;
+  std::string message;
+};
+ToolSizeProblem tool_size_problem(const CuttingParameters& c, const ToolSize& size);
 
 // The tool moving at -cutting_speed along x, its rake face facing -x, placed so that its lowest
 // point lies on the machined surface and its edge at leading_x.
-RigidBodySpec make_cutting_tool(const CuttingParameters& c, const ToolPlacement& where, double tool_length,
-                                double tool_height);
+// Throws std::invalid_argument with tool_size_problem's message when the size is not a tool.
+RigidBodySpec make_cutting_tool(const CuttingParameters& c, const ToolPlacement& where, const ToolSize& size);
 
 }  // namespace mpmcut

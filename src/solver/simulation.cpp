@@ -232,6 +232,12 @@ void Simulation::remove_escaped_particles() {
                                       materials_[P.material[p]]->elastic_energy(P, p);
     }
   }
+  // Nothing left to simulate is not a result: a run would go on to a "complete" end with zero forces.
+  if (keep.empty() && P.size() > 0)
+    throw SimulationError(fmt::format("every particle has left the grid domain by step {}, time {:.6g} s ({} removed "
+                                      "in all): nothing is left to simulate (is a body placed outside the grid, or "
+                                      "thrown out of it?)",
+                                      state_.step, state_.time, state_.removed_particles));
   if (keep.size() != P.size()) particles_.permute(keep);
 }
 

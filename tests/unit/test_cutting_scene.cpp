@@ -4,9 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <string>
 
+#include "contact/rigid_polygon.hpp"
 #include "cutting/cutting_scene.hpp"
+#include "cutting/tool_geometry.hpp"
 #include "physics/material_parameters.hpp"
 
 namespace mpmcut {
@@ -44,6 +47,98 @@ TEST(CuttingScene, MachinedSurfaceLiesOnANodeRowOnEveryGrid) {
   // An aligned height stays exactly as it is (300 um / 10 um is 29.999... in floating point).
   EXPECT_EQ(machined_surface_on_node_row(0.4e-3, 0.1e-3, 10e-6), 0.4e-3);
   EXPECT_EQ(machined_surface_on_node_row(0.4e-3, 0.1e-3, 0.1e-3 / 24.0), 0.4e-3);
+}
+
+CuttingParameters tool_test_cut() {
+  CuttingParameters c;
+  c.cutting_speed = 2.0;
+  c.uncut_chip_thickness = 0.1e-3;
+  c.cut_length = 0.2e-3;
+  c.cell_size = 10e-6;
+  return c;
+}
+
+// Every accepted rake, clearance and edge radius gives a tool with the automatic sizes: a simple outline whose
+// lowest point runs on the machined surface and whose leftmost point between the machined and the uncut surface
+// starts half a cell beyond the workpiece, so that no workpiece particle starts inside it. Before, a rake from 38 deg
+// was refused ("leans past the tool's back"), a radius of 1.5 t0 made a pill without faces and 5 t0 an inverted
+// outline that removed every particle, and a rake of -20 deg started with its rake face 30 um inside the workpiece.
+TEST(CuttingScene, AutomaticToolFitsEveryAcceptedAngleAndRadius) {
+  MaterialParameters m;
+  m.name = "ti";
+  for (const double rake : {-44.9, -20.0, 0.0, 20.0, 38.0, 44.9})
+    for (const double clearance : {0.5, 11.0, 35.0})
+      for (const double radius_t0 : {0.0, 0.05, 0.5, 1.5, 5.0, 9.9}) {
+        if (rake + clearance >= 80.0) continue;
+        SCOPED_TRACE(::testing::Message() << "rake " << rake << ", clearance " << clearance << ", r " << radius_t0 << " t0");
+        CuttingParameters c = tool_test_cut();
+        c.rake_angle_deg = rake;
+        c.clearance_angle_deg = clearance;
+        c.edge_radius = radius_t0 * c.uncut_chip_thickness;
+        const ToolSize size = tool_size(c);
+        EXPECT_EQ(tool_size_problem(c, size).message, "");
+        Scene s;
+        ASSERT_NO_THROW(s = build_cutting_scene(c, m));
+        const RigidBodySpec& tool = s.rigid_bodies.at(0);
+        const RigidPolygon shape(tool.polygon, tool.rounding_radius);
+        const double H = s.bodies[0].shape.rectangle.max.y(), L = s.bodies[0].shape.rectangle.max.x();
+        const double surface = H - c.uncut_chip_thickness, h = s.grid.cell_size;
+        // The outline keeps its counter-clockwise order (an inverted core turns it round).
+        double area2 = 0.0;
+        const auto& v = tool.polygon.vertices;
+        for (std::size_t i = 0; i < v.size(); ++i) area2 += v[i].x() * v[(i + 1) % v.size()].y() - v[(i + 1) % v.size()].x() * v[i].y();
+        EXPECT_GT(area2, 0.0);
+        // Lowest point on the machined surface; leftmost point within the cut's depth at L + h/2.
+        double lowest = std::numeric_limits<double>::infinity(), leftmost = lowest;
+        Vec2 normal;
+        for (int i = 0; i <= 40; ++i) {  // the first x inside the tool at each height: a scan, then bisection
+          const double y = surface + c.uncut_chip_thickness * i / 40.0, step = h / 8.0;
+          double x = L - 2e-3;
+          while (x < L + 2e-3 && shape.signed_distance(Vec2(x, y), normal) > 0.0) x += step;
+          double lo = x - step, hi = x;
+          for (int k = 0; k < 60; ++k) ((shape.signed_distance(Vec2(0.5 * (lo + hi), y), normal) > 0.0) ? lo : hi) = 0.5 * (lo + hi);
+          leftmost = std::min(leftmost, hi);
+        }
+        for (const Vec2& p : v) lowest = std::min(lowest, p.y() - tool.rounding_radius);
+        EXPECT_NEAR(lowest, surface, 1e-12);
+        // Sampled at 41 heights t0/40 apart: a sharp edge's point is seen one sample up its rake face.
+        const double sampling = 0.01 * h + (c.uncut_chip_thickness / 40.0) * std::max(0.0, std::tan(rake * M_PI / 180.0));
+        EXPECT_NEAR(leftmost, L + 0.5 * h, sampling);
+        EXPECT_GE(leftmost, L + 0.5 * h - 1e-9);
+        EXPECT_LE(shape.upper().x(), s.grid.max.x());
+      }
+}
+
+// Sizes given that cannot make a tool are refused at their key, saying what would fit.
+TEST(CuttingScene, GivenToolSizesThatMakeNoToolAreRefusedAtTheirKey) {
+  MaterialParameters m;
+  m.name = "ti";
+  const auto refusal = [&](CuttingParameters c) -> std::pair<std::string, std::string> {
+    try {
+      build_cutting_scene(c, m);
+    } catch (const CuttingKeyError& e) {
+      return {e.key, e.what()};
+    }
+    return {"", ""};
+  };
+  CuttingParameters c = tool_test_cut();
+  c.tool_height = 50e-6;  // below the flank's rise over 0.3 mm at 11 deg (58 um): a self-crossing outline
+  EXPECT_EQ(refusal(c).first, "tool_height");
+  EXPECT_NE(refusal(c).second.find("give tool_height > 0.05831 mm"), std::string::npos) << refusal(c).second;
+  c = tool_test_cut();
+  c.tool_height = 0.15e-3;  // a simple outline, but the chip would flow over its top
+  EXPECT_EQ(refusal(c).first, "tool_height");
+  EXPECT_NE(refusal(c).second.find("tool_height >= 0.2 mm"), std::string::npos) << refusal(c).second;
+  c = tool_test_cut();
+  c.rake_angle_deg = 40.0;
+  c.tool_length = 0.3e-3;  // the rake face's top is 0.336 mm out
+  EXPECT_EQ(refusal(c).first, "tool_length");
+  EXPECT_NE(refusal(c).second.find("give tool_length > 0.3356 mm"), std::string::npos) << refusal(c).second;
+  c = tool_test_cut();
+  c.edge_radius = 0.5e-3;
+  c.tool_length = 0.3e-3;
+  EXPECT_EQ(refusal(c).first, "edge_radius");
+  EXPECT_NE(refusal(c).second.find("at most 0.15 mm fits"), std::string::npos) << refusal(c).second;
 }
 
 // The tool of the preset carries the process's friction, frictional-heat share and heat transfer.

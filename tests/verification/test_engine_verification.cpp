@@ -237,6 +237,27 @@ TEST(Guards, ParticleLeavingTheGridIsReported) {
   }
 }
 
+// With escaping particles removed, a body that leaves whole is not a run that goes on to a "complete" end with
+// zero forces: the last particle's removal stops it with a message (it ran on, empty, to its end time).
+TEST(Guards, EveryParticleRemovedStopsTheRun) {
+  Scene s;
+  s.grid = {0.1, Vec2(0, 0), Vec2(1, 1)};
+  s.materials.push_back(elastic_material("m", 1e3, 0.3, 10.0));
+  s.bodies.push_back(rectangle_body("block", "m", Vec2(0.7, 0.4), Vec2(0.9, 0.6), 2, Vec2(50.0, 0.0)));
+  s.solver.remove_escaping_particles = true;
+  Simulation sim(s);
+  int steps = 0;
+  try {
+    for (; steps < 1000; ++steps) sim.step();
+    FAIL() << "expected SimulationError";
+  } catch (const SimulationError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("every particle has left the grid"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("(16 removed in all)"), std::string::npos) << msg;
+    EXPECT_GT(steps, 0);
+  }
+}
+
 namespace {
 // A block at rest in the middle of the grid, for guards fed one bad particle value.
 Scene resting_block_scene() {
