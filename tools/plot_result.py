@@ -14,6 +14,7 @@ snapshots (meshio); needs numpy, matplotlib and meshio (Debian: python3-matplotl
 import argparse
 import math
 import os
+import re
 import sys
 import textwrap
 import tomllib
@@ -236,6 +237,17 @@ def case_caption(process, time_s, tool):
     return ", ".join(parts), t
 
 
+def snapshot_is_empty(path):
+    """Whether a VTU snapshot has no points (read from its Piece header, as meshio fails on it)."""
+    try:
+        with open(path, "rb") as f:
+            head = f.read(4096).decode("latin-1")
+    except OSError:
+        return False
+    m = re.search(r'NumberOfPoints="(\d+)"', head)
+    return m is not None and int(m.group(1)) == 0
+
+
 def load_snapshot(path, tool, process, time_s):
     """The mesh of one VTU snapshot, its time (from the file where it has one) and the view window of the
     cutting zone around the tool tip."""
@@ -352,6 +364,10 @@ def plot_profile(result_dir, summary):
     chip = (summary or {}).get("chip") or {}
     prof = chip.get("profile") or {}
     thickness = prof.get("thickness_m")
+    if thickness is not None and len(thickness) == 0:
+        print("note: the chip has no measurable profile (a cut too short for the chip to leave its root; "
+              "`mpmcut analyze` gives the same): no chip_profile.png", file=sys.stderr)
+        return None
     if not thickness:
         print("note: summary.json has no chip profile (not a cutting run, or analysed before profiles were "
               "written: mpmcut analyze DIR adds it): no chip_profile.png", file=sys.stderr)
@@ -429,6 +445,9 @@ def main(argv):
     if not chosen:
         print(f"note: no snapshots listed in {d}/particles.pvd: no chip pictures", file=sys.stderr)
     for index, time_s, path in chosen:
+        if snapshot_is_empty(path):  # meshio cannot read a VTU without points (a run that lost every particle)
+            print(f"note: {os.path.basename(path)} holds no particles: no chip picture of it", file=sys.stderr)
+            continue
         written += plot_snapshot(d, index, time_s, path, tool, process, material)
     f = plot_forces(d, summary, process, tool)
     if f:

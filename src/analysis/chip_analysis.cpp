@@ -121,7 +121,17 @@ namespace {
 void classify_confidence(ChipAnalysis& a, const ChipThresholds& th) {
   a.classification_confidence = "clear";
   if (a.classification != "serrated" && a.classification != "continuous") return;
-  const double gs = a.segmentation.degree.value_or(0.0);
+  if (!a.segmentation.degree) {
+    // One piece, but no profile to measure (a short cut, a chip still at the root): "continuous" says only that
+    // it is one piece (it was "clear" with every chip measure empty).
+    a.classification_confidence = "marginal";
+    a.classification_note = fmt::format(
+        "the chip is one piece, but its profile could not be measured ({} thickness samples): whether it is "
+        "serrated is not known; a longer cut gives the chip a profile",
+        a.profile.thickness_m.size());
+    return;
+  }
+  const double gs = *a.segmentation.degree;
   if (a.classification == "continuous" && gs >= th.serrated_degree) {
     a.classification_confidence = "marginal";
     a.classification_note = fmt::format(

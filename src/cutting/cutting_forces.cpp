@@ -231,7 +231,11 @@ void CuttingForcesObserver::at_finish(const Simulation& sim, nlohmann::json& sum
       if (friction_work_known_) {
         const double travel = r.time * c_.cutting_speed;
         summary["rake_face"]["friction_work_per_travel_N_per_mm"] = r.friction_work / travel * kPerMm;
-        summary["rake_face"]["mean_slip_speed_m_per_s"] = r.friction > 0.0 ? r.friction_work / r.friction : 0.0;
+        // Defined where the chip drags the tool up the face; at a strongly negative rake material also flows down
+        // it, the net friction impulse is not the sum of the slipping parts' and the ratio means nothing (it was
+        // 0 m/s beside 1.4 N/mm of frictional work at -44.9 deg).
+        summary["rake_face"]["mean_slip_speed_m_per_s"] =
+            r.friction > 0.0 ? nlohmann::json(r.friction_work / r.friction) : nlohmann::json(nullptr);
         summary["edge_and_flank"]["friction_work_per_travel_N_per_mm"] =
             (r.tool_friction_work - r.friction_work) / travel * kPerMm;
         summary["rake_face"]["definition"] =
@@ -239,7 +243,8 @@ void CuttingForcesObserver::at_finish(const Simulation& sim, nlohmann::json& sum
             ". friction_work_per_travel: the frictional dissipation on the face over the steady window divided by "
             "the tool's travel in it (edge_and_flank: the tool's other frictional dissipation); mean_slip_speed: "
             "that dissipation divided by the friction impulse, the friction-force-weighted slip speed of the chip "
-            "on the face (sticking counts as zero slip)";
+            "on the face (sticking counts as zero slip); null where the net friction does not drag the tool up the face "
+            "(material flowing down a strongly negative rake face)";
       }
     }
     summary["steady_window"] = {{"start_time_s", steady_start_time_},

@@ -36,7 +36,8 @@ CuttingParameters read_cutting_parameters(TableReader& t) {
           "such that rake + clearance < 80 degrees (the tool wedge needs a positive angle)", c.rake_angle_deg);
   c.edge_radius = t.number("edge_radius", c.edge_radius, Range::closed(0.0, 1.0, "m"));
   t.check("edge_radius", c.edge_radius >= 0.0 && c.edge_radius < c.uncut_chip_thickness * 10.0,
-          "a length >= 0 m and below 10 uncut chip thicknesses", c.edge_radius);
+          fmt::format("a length >= 0 m and below 10 uncut chip thicknesses ({:.4g} m)", 10.0 * c.uncut_chip_thickness),
+          c.edge_radius);
   c.tool_length = t.number("tool_length", c.tool_length, Range::closed(0.0, 1.0, "m", "0 = automatic"));
   c.tool_height = t.number("tool_height", c.tool_height, Range::closed(0.0, 1.0, "m", "0 = automatic"));
   c.friction = t.number("friction", c.friction, Range::closed(0.0, 2.0, "", "Coulomb coefficient"));

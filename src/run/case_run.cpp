@@ -199,8 +199,10 @@ int CaseRun::finish() {
   ended_ = true;
   if (options_.progress) progress_->finish(status_);
   const double wall_s = wall_before_s_ + session_wall_s();
+  std::string energy_warning;
   try {
     nlohmann::json sections = to_json(summarize(sim_, cutting_, status_, wall_s, message_, threads_));
+    energy_warning = sections["energy_balance"].value("warning", "");
     if (tuner_) sections["thread_tuning"] = {{"threads_in_use_at_end", tuner_->chosen()}, {"trials", tuner_->trials()}};
     if (!last_checkpoint_.empty()) sections["last_checkpoint"] = "checkpoints/" + last_checkpoint_;
     if (!resumed_from_.empty()) sections["resumed_from"] = "checkpoints/" + resumed_from_;
@@ -215,6 +217,7 @@ int CaseRun::finish() {
   if (!message_.empty())
     std::cerr << (exit_code_ == kExitInterrupted ? "" : exit_code_ == kExitComplete ? "warning: " : "error: ")
               << message_ << "\n";
+  if (exit_code_ == kExitComplete && !energy_warning.empty()) std::cerr << "warning: " << energy_warning << "\n";
   std::cerr << fmt::format(
       "{}: {} particles, {} steps, {:.3g} s simulated in {:.1f} s wall ({:.3g} particle-steps/s); results in {}\n",
       status_, sim_.particles().size(), sim_.step_count(), sim_.time(), wall_s,

@@ -133,6 +133,14 @@ RunSummary summarize(const Simulation& sim, const std::optional<CuttingParameter
   return s;
 }
 
+std::string energy_residual_warning(double relative_residual) {
+  if (!(std::abs(relative_residual) > kEnergyResidualWarning)) return "";
+  return fmt::format("the energy balance leaves {:+.1f} % of the energy in unaccounted for (normally 0.5-1 %, warned "
+                     "beyond {:g} %): the run is not resolved well enough for its numbers to be trusted (too few "
+                     "cells or particles across the chip, a speed or a time step at its limits); refine it",
+                     100.0 * relative_residual, 100.0 * kEnergyResidualWarning);
+}
+
 json to_json(const RunSummary& s) {
   json j = s.sections;
   j["status"] = s.status;
@@ -155,6 +163,8 @@ json to_json(const RunSummary& s) {
   j["energy_J_per_m"] = energy;
   j["energy_balance"] = {{"residual_J_per_m", s.energy_residual_J_per_m},
                          {"relative_residual", s.energy_relative_residual}};
+  if (const std::string w = energy_residual_warning(s.energy_relative_residual); !w.empty())
+    j["energy_balance"]["warning"] = w;
   j["max_temperature_K"] = s.max_temperature_K;
   json rigid = json::array();
   for (const auto& r : s.rigid_bodies)

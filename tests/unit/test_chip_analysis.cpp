@@ -238,6 +238,19 @@ TEST(ChipAnalysis, NoChipAndJsonKeys) {
   EXPECT_TRUE(temperature_json(a)["primary_shear_zone"]["max_K"].is_null());
 }
 
+// A one-piece chip too short for a profile (still at the root): "continuous" only as one piece, marginal, with a
+// note; it was "continuous, clear" with every chip measure empty.
+TEST(ChipAnalysis, AChipWithoutAProfileIsAMarginalOnePieceChip) {
+  const ChipAnalysisSetup s = synthetic_setup();
+  const ChipAnalysis a = analyze_chip(chip_particles_of(40e-6, [](double) { return 150e-6; }), s);
+  ASSERT_EQ(a.classification, "continuous");
+  EXPECT_EQ(a.pieces, 1u);
+  EXPECT_FALSE(a.segmentation.degree.has_value());
+  EXPECT_FALSE(a.chip_thickness_ratio.has_value());
+  EXPECT_EQ(a.classification_confidence, "marginal");
+  EXPECT_NE(a.classification_note.find("could not be measured"), std::string::npos) << a.classification_note;
+}
+
 TEST(ChipAnalysis, SetupNeedsTheWorkpieceAndTheTool) {
   Scene scene;
   EXPECT_THROW(chip_analysis_setup(scene, CuttingParameters{}, Vec2::Zero(), 0.0), std::invalid_argument);
