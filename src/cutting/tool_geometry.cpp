@@ -171,15 +171,16 @@ RigidBodySpec make_cutting_tool(const CuttingParameters& c, const ToolPlacement&
     throw std::invalid_argument("cutting tool: " + problem.message);
   const double r = c.edge_radius;
   std::vector<Vec2> core = rounding_core(sharp_wedge(c, size), r);
-  // Place it: the edge centre core[0] sits r above the machined surface (the lowest point of the arc on it), and
-  // the leftmost point between the two surfaces at leading_x. Where that is the edge's own leftmost point (centre
-  // - r; a rake >= 0 and r <= t0: every cut before this rule) the placement is that exact expression, so that
-  // those scenes stay the same to the last bit.
-  Vec2 shift = Vec2(where.leading_x + r, where.machined_surface_y + r) - core[0];
+  // Place it: the edge centre core[0] sits r above the machined surface (the lowest point of the arc on it), its
+  // leftmost point (centre - r) at leading_x. A negative rake leans the rake face left of that above the edge: the
+  // tool then moves right until its leftmost point between the two surfaces is at leading_x, so that it does not
+  // start inside the workpiece (a -20 deg rake started 30 um inside). An edge radius > t0 meets the workpiece
+  // right of leading_x and starts with a gap (r - sqrt(r^2 - (r - t0)^2) of travel); it is left so, since the
+  // validation's thin-feed records (r_n = 34 um at h = 0.01 mm) were run with it.
+  const Vec2 shift = Vec2(where.leading_x + r, where.machined_surface_y + r) - core[0];
   for (Vec2& p : core) p += shift;
   const double leftmost = leftmost_x_between(core, r, where.machined_surface_y, where.uncut_surface_y);
-  const double scale = std::max(size.length, size.height);
-  if (std::abs(leftmost - where.leading_x) > 1e-9 * scale)
+  if (leftmost < where.leading_x - 1e-9 * std::max(size.length, size.height))
     for (Vec2& p : core) p.x() += where.leading_x - leftmost;
   RigidBodySpec tool;
   tool.name = "tool";

@@ -11,9 +11,8 @@ namespace mpmcut {
 struct ToolPlacement {
   double machined_surface_y = 0.0;  // lowest point of the cutting edge, m
   double uncut_surface_y = 0.0;     // the workpiece's top, m
-  // x of the tool's leftmost point between the machined and the uncut surface (the first point to meet the
-  // workpiece), m. For a rake >= 0 and an edge radius <= t0 that is the edge's leftmost point; a negative rake
-  // leans its rake face further left above the edge, and an edge radius > t0 meets the workpiece right of it.
+  // x of the edge's leftmost point (at the height of the edge centre), m; for a negative rake, whose face leans
+  // further left above the edge, of the tool's leftmost point between the machined and the uncut surface.
   double leading_x = 0.0;
 };
 

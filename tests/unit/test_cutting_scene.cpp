@@ -60,7 +60,8 @@ CuttingParameters tool_test_cut() {
 
 // Every accepted rake, clearance and edge radius gives a tool with the automatic sizes: a simple outline whose
 // lowest point runs on the machined surface and whose leftmost point between the machined and the uncut surface
-// starts half a cell beyond the workpiece, so that no workpiece particle starts inside it. Before, a rake from 38 deg
+// starts half a cell beyond the workpiece (an edge radius > t0 a gap further), so that no workpiece particle
+// starts inside it. Before, a rake from 38 deg
 // was refused ("leans past the tool's back"), a radius of 1.5 t0 made a pill without faces and 5 t0 an inverted
 // outline that removed every particle, and a rake of -20 deg started with its rake face 30 um inside the workpiece.
 TEST(CuttingScene, AutomaticToolFitsEveryAcceptedAngleAndRadius) {
@@ -103,7 +104,16 @@ TEST(CuttingScene, AutomaticToolFitsEveryAcceptedAngleAndRadius) {
         EXPECT_NEAR(lowest, surface, 1e-12);
         // Sampled at 41 heights t0/40 apart: a sharp edge's point is seen one sample up its rake face.
         const double sampling = 0.01 * h + (c.uncut_chip_thickness / 40.0) * std::max(0.0, std::tan(rake * M_PI / 180.0));
-        EXPECT_NEAR(leftmost, L + 0.5 * h, sampling);
+        // An edge radius > t0 meets the workpiece right of its own leftmost point, after a gap of travel; a negative
+        // rake's face meets it at L + h/2 where the edge's leftmost point would have put it inside, else within r.
+        const double r = c.edge_radius, t0 = c.uncut_chip_thickness;
+        if (rake >= 0.0) {
+          const double gap = r > t0 ? r - std::sqrt(r * r - (r - t0) * (r - t0)) : 0.0;
+          EXPECT_NEAR(leftmost, L + 0.5 * h + gap, sampling + 0.01 * h);
+        } else {
+          EXPECT_LE(leftmost, L + 0.5 * h + r + 0.01 * h);
+          if (r == 0.0) EXPECT_NEAR(leftmost, L + 0.5 * h, 0.01 * h);  // the sharp face leans left of the edge
+        }
         EXPECT_GE(leftmost, L + 0.5 * h - 1e-9);
         EXPECT_LE(shape.upper().x(), s.grid.max.x());
       }
