@@ -131,6 +131,16 @@ void classify_confidence(ChipAnalysis& a, const ChipThresholds& th) {
         a.profile.thickness_m.size());
     return;
   }
+  if (a.chip_thickness_ratio && *a.chip_thickness_ratio > th.max_plausible_thickness_ratio) {
+    // Impossible for a steady chip: the profile is the entry chip's or the grid's (t0/tc 4.6 at 4 cells across t0
+    // over 60 um of cut was "clear").
+    a.classification_confidence = "marginal";
+    a.classification_note = fmt::format(
+        "the measured chip is thinner than t0 / {:g} (t0/tc = {:.2f}): not a steady chip's profile (too short a cut, "
+        "or too few cells across t0: {:.1f}); its thickness, shear angle and type are not reliable",
+        th.max_plausible_thickness_ratio, *a.chip_thickness_ratio, a.cells_per_feed);
+    return;
+  }
   const double gs = *a.segmentation.degree;
   if (a.classification == "continuous" && gs >= th.serrated_degree) {
     a.classification_confidence = "marginal";

@@ -53,6 +53,9 @@ struct ChipThresholds {
   double shear_zone_overshoot_t0 = 0.25;   // ... and up to this * t0 above the uncut surface
   double interface_distance_cells = 1.0;   // tool-chip interface: within this many h of the tool
   double resolved_cells_per_feed = 8.0;    // fewer cells across t0: segments are not resolved (a note says so)
+  // A chip thinner than t0 / this (t0/tc above it: a shear angle above 63 deg at a 0 deg rake; Ti-6Al-4V chips
+  // measure t0/tc 0.6-1.0) is not a chip's steady profile but a short or under-resolved cut's: "marginal".
+  double max_plausible_thickness_ratio = 2.0;
 };
 
 // The geometry of the cut at the analysed instant.

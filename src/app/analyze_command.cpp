@@ -69,7 +69,8 @@ int analyze(const fs::path& dir, const std::string& snapshot) {
   const fs::path summary_file = dir / "summary.json";
   RunSummary summary = read_summary(summary_file);
 
-  const PvdSeries::Entry entry = pick_snapshot(snapshots_of(dir), snapshot);
+  const std::vector<PvdSeries::Entry> entries = snapshots_of(dir);
+  const PvdSeries::Entry entry = pick_snapshot(entries, snapshot);
   const fs::path vtu = dir / entry.file;
   const VtuSnapshot snap = read_particles_vtu(vtu);
   // The tool moves at its prescribed velocity from t = 0 (cutting_scene.cpp).
@@ -82,6 +83,15 @@ int analyze(const fs::path& dir, const std::string& snapshot) {
   // The run's own samples over its steady window (analysed while it ran; a snapshot gives one instant).
   if (const auto over_time = summary.sections.find("chip_over_time"); over_time != summary.sections.end())
     std::cout << chip_over_time_text(*over_time);
+  // summary.json describes the run's final state (its fracture, energy and temperature sections too): an earlier
+  // snapshot's analysis is shown, not merged (it replaced the final chip, so that plot then drew the last snapshot
+  // beside another one's chip numbers).
+  if (entry.file != entries.back().file) {
+    std::cout << fmt::format("not merged into {}: it describes the final state ({}); this is {}\n",
+                             summary_file.string(), fs::path(entries.back().file).filename().string(),
+                             fs::path(entry.file).filename().string());
+    return kExitComplete;
+  }
   nlohmann::json chip = chip_json(a), temperature = temperature_json(a);
   chip["source"] = entry.file;
   temperature["source"] = entry.file;
@@ -115,7 +125,7 @@ void add_analyze_command(CLI::App& app) {
   auto options = std::make_shared<Options>();
   CLI::App* cmd = app.add_subcommand(
       "analyze", "Chip analysis of a cutting run's snapshot (morphology, segmentation, shear angle, temperatures); "
-                 "merges the results into its summary.json");
+                 "merges the results of the last snapshot into its summary.json");
   cmd->add_option("result_dir", options->dir, "Result directory of a cutting run")->required();
   cmd->add_option("--snapshot", options->snapshot, "Snapshot number N (snapshots/particles_N.vtu) or 'last'")
       ->capture_default_str();

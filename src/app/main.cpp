@@ -131,8 +131,8 @@ int main(int argc, char** argv) {
       "bench", "Measure particle-steps per second: elastic block, all-plastic Ti-6Al-4V block, the default cut");
   bench->add_option("--particles", bench_options.particles, "Approximate particle count")->check(CLI::Range(100L, 100000000L));
   bench->add_option("--steps", bench_options.steps, "Timed steps")->check(CLI::Range(1, 1000000));
-  bench->add_option("--threads", bench_options.threads, "Thread counts to measure (default: 1 2)")
-      ->check(CLI::Range(1, kMaxThreads));
+  bench->add_option("--threads", bench_options.threads, "Thread counts to measure, e.g. 1,2 or 1 2 (default: 1 2)")
+      ->delimiter(',')->check(CLI::Range(1, kMaxThreads));
   bench->add_option("--case", bench_options.which, "Which benchmark: elastic, plastic, cutting or all (default: all)")
       ->check(CLI::IsMember({"elastic", "plastic", "cutting", "all"}));
   bench->add_option("--cutting-steps", bench_options.cutting_steps, "Timed steps of the cutting case per thread count")

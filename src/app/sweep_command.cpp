@@ -322,10 +322,15 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
       const GridConvergenceReport richardson = grid_convergence_report(out / "sweep.csv");
       if (richardson.conditions > 0) richardson.table.write_csv(out / "grid_convergence.csv");
       s << richardson.markdown;
-      s << "Plots: convergence.png (each quantity against the cells across h). ";
-    } else {
-      s << "Plots: forces_vs_speed.png, chip_vs_speed.png, chip_map.png. ";
     }
+    // The plots are drawn below, after this file, for a complete sweep without --no-plots.
+    if (o.no_plots || !completed)
+      s << "Plots: none (" << (o.no_plots ? "--no-plots" : "an interrupted sweep") << "; `mpmcut sweep` again without "
+        << "--no-plots over this directory draws them, its complete cases kept). ";
+    else if (resolutions.size() > 1)
+      s << "Plots: convergence.png (each quantity against the cells across h). ";
+    else
+      s << "Plots: forces_vs_speed.png, chip_vs_speed.png, chip_map.png. ";
     s << "Each case: its result directory (mpmcut plot DIR draws it) and logs/<case>.log.\n";
   });
   std::cout << "wrote " << (out / "sweep.csv").string() << " and " << (out / "sweep.md").string() << "\n";

@@ -52,7 +52,7 @@ inline const ParameterTable<DamageParameters>& damage_parameter_table() {
           choice<P, &P::damage_evolution>("damage_evolution", {"linear", "exponential"}, "softening after initiation"),
           // G_f = 0 is Abaqus' "instantaneous failure", which it warns causes dynamic instabilities.
           number("fracture_energy", &P::fracture_energy, "J/m^2",
-                 Range::open_closed(0.0, 1e8, "", "positive when damage = true"),
+                 Range::open_closed(0.0, 1e8, "", "positive when damage = true; or give fracture_toughness K_IC"),
                  "G_f (the low-rate value when rate-dependent)")
               .used_with(InUse::Damage),
           number("fracture_energy_brittle", &P::fracture_energy_brittle, "J/m^2",

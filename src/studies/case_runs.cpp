@@ -280,6 +280,19 @@ CaseResult read_case_result(const fs::path& dir, const fs::path& log_file, int e
   r.status = s.status;
   if (r.status.empty()) r.status = exit_code == 0 ? "complete" : "failed";
   r.message = s.message;
+  // The run's warnings on its numbers go with them into the study's table (sweep.csv's message was empty beside
+  // a run that warned of a window in the entry transient or a drifting force).
+  {
+    std::vector<std::string> warnings;
+    const nlohmann::json& window = s.sections.contains("steady_window") ? s.sections["steady_window"] : nlohmann::json();
+    if (window.is_object() && window.contains("warning") && window["warning"].is_string())
+      warnings.push_back(window["warning"].get<std::string>());
+    if (window.is_object() && window.contains("drift") && window["drift"].is_object() &&
+        window["drift"].contains("warning") && window["drift"]["warning"].is_string())
+      warnings.push_back(window["drift"]["warning"].get<std::string>());
+    if (const std::string w = energy_residual_warning(s.energy_relative_residual); !w.empty()) warnings.push_back(w);
+    for (const std::string& w : warnings) r.message += (r.message.empty() ? "warning: " : "; warning: ") + w;
+  }
   r.source_revision = s.source_revision.empty() ? "unrecorded" : s.source_revision;
   if (r.status != "complete" && r.message.empty()) r.message = last_lines(log_file, 2);
 

@@ -54,7 +54,12 @@ def main(binary, scratch):
         if r["status"] != "complete":
             fail(f"n{n}: {r['status']} {r['message']}")
         with open(os.path.join(out, f"v20mps_h0.1mm_n{n}", "summary.json")) as f:
-            cell = json.load(f)["cell_size_m"]
+            summary = json.load(f)
+        cell = summary["cell_size_m"]
+        # The run's warning on its window (75 um of cut: the entry transient) is in the table's message too.
+        warning = summary.get("steady_window", {}).get("warning")
+        if not warning or f"warning: {warning}" not in r["message"]:
+            fail(f"n{n}: the run's steady-window warning is not in sweep.csv's message: {warning!r} / {r['message']!r}")
         if abs(cell - 0.1e-3 / n) > 1e-12:
             fail(f"n{n}: cell {cell} m, expected {0.1e-3 / n}")
         if abs(float(r["cells_per_feed"]) - n) > 1e-6 or abs(float(r["cell_size_um"]) - 100.0 / n) > 0.1:

@@ -96,6 +96,15 @@ def main(binary, scratch):
     p = subprocess.run([binary, "plot", os.path.join(scratch, "no_such_dir")], capture_output=True, text=True)
     if p.returncode == 0:
         fail("plot of a missing directory exited 0")
+    # An earlier snapshot's chip analysis is printed, not merged into the summary of the final state.
+    with open(os.path.join(case_dir, "summary.json")) as f:
+        before = f.read()
+    p = subprocess.run([binary, "analyze", case_dir, "--snapshot", "1"], capture_output=True, text=True, timeout=120)
+    with open(os.path.join(case_dir, "summary.json")) as f:
+        after = f.read()
+    if p.returncode != 0 or "not merged" not in p.stdout or after != before:
+        fail(f"analyze --snapshot 1 changed the final state's summary or did not say so: exit {p.returncode}, "
+             f"{p.stdout}{p.stderr}")
     # A snapshot without particles (meshio cannot read one: plot ended in a traceback) is skipped with a note.
     empty_dir = os.path.join(scratch, "empty_snapshot")
     shutil.copytree(case_dir, empty_dir)

@@ -251,6 +251,18 @@ TEST(ChipAnalysis, AChipWithoutAProfileIsAMarginalOnePieceChip) {
   EXPECT_NE(a.classification_note.find("could not be measured"), std::string::npos) << a.classification_note;
 }
 
+// A chip thinner than t0/2 is no steady chip (a short or under-resolved cut measured t0/tc 4.6, "clear"): marginal.
+TEST(ChipAnalysis, AChipThinnerThanHalfTheUncutChipIsMarginal) {
+  const ChipAnalysisSetup s = synthetic_setup();
+  const ChipAnalysis thin = analyze_chip(chip_particles_of(1e-3, [](double) { return 40e-6; }), s);
+  ASSERT_EQ(thin.classification, "continuous");
+  EXPECT_NEAR(*thin.chip_thickness_ratio, 2.5, 0.1);
+  EXPECT_EQ(thin.classification_confidence, "marginal");
+  EXPECT_NE(thin.classification_note.find("not a steady chip"), std::string::npos) << thin.classification_note;
+  const ChipAnalysis thick = analyze_chip(chip_particles_of(1e-3, [](double) { return 60e-6; }), s);  // t0/tc 1.7
+  EXPECT_EQ(thick.classification_confidence, "clear");
+}
+
 TEST(ChipAnalysis, SetupNeedsTheWorkpieceAndTheTool) {
   Scene scene;
   EXPECT_THROW(chip_analysis_setup(scene, CuttingParameters{}, Vec2::Zero(), 0.0), std::invalid_argument);
