@@ -1,9 +1,9 @@
 #include "cutting/tool_geometry.hpp"
 
-#include <cmath>
-#include <numbers>
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 
 #include <fmt/format.h>
