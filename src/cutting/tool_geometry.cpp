@@ -64,10 +64,14 @@ bool core_keeps_every_edge(const std::vector<Vec2>& wedge, const std::vector<Vec
   return true;
 }
 
+// The two ways a wedge of the given size is not a simple polygon (wedge points as sharp_wedge orders them).
+bool rake_leans_past_back(const std::vector<Vec2>& wedge) { return wedge[3].x() >= wedge[1].x(); }
+bool flank_rises_above_top(const std::vector<Vec2>& wedge) { return wedge[2].y() <= wedge[1].y(); }
+
 // Whether the outline of this size, with a radius r, is a tool (the checks of tool_size_problem but the 2 t0).
 bool is_a_tool(const CuttingParameters& c, const ToolSize& size, double r) {
   const std::vector<Vec2> wedge = sharp_wedge(c, size);
-  if (wedge[3].x() >= wedge[1].x() || wedge[2].y() <= wedge[1].y()) return false;
+  if (rake_leans_past_back(wedge) || flank_rises_above_top(wedge)) return false;
   return core_keeps_every_edge(wedge, rounding_core(wedge, r));
 }
 
@@ -136,12 +140,12 @@ ToolSizeProblem tool_size_problem(const CuttingParameters& c, const ToolSize& si
   const std::string sizes = fmt::format("tool_length {}{}, tool_height {}{}", mm(size.length),
                                         c.tool_length > 0.0 ? "" : " (automatic)", mm(size.height),
                                         c.tool_height > 0.0 ? "" : " (automatic)");
-  if (wedge[3].x() >= wedge[1].x())
+  if (rake_leans_past_back(wedge))
     return {"tool_length",
             fmt::format("the rake face (rake angle {:g} deg) leans past the tool's back: its top is {} beyond the edge "
                         "and the tool is {} long ({}); give tool_length > {} or a smaller tool_height",
                         c.rake_angle_deg, mm(wedge[3].x()), mm(size.length), sizes, mm(wedge[3].x()))};
-  if (wedge[2].y() <= wedge[1].y())
+  if (flank_rises_above_top(wedge))
     return {"tool_height",
             fmt::format("the flank (clearance angle {:g} deg) rises {} over the tool's length, above the tool's top "
                         "({}); give tool_height > {} or a shorter tool_length",

@@ -284,12 +284,14 @@ CaseResult read_case_result(const fs::path& dir, const fs::path& log_file, int e
   // a run that warned of a window in the entry transient or a drifting force).
   {
     std::vector<std::string> warnings;
-    const nlohmann::json& window = s.sections.contains("steady_window") ? s.sections["steady_window"] : nlohmann::json();
-    if (window.is_object() && window.contains("warning") && window["warning"].is_string())
-      warnings.push_back(window["warning"].get<std::string>());
-    if (window.is_object() && window.contains("drift") && window["drift"].is_object() &&
-        window["drift"].contains("warning") && window["drift"]["warning"].is_string())
-      warnings.push_back(window["drift"]["warning"].get<std::string>());
+    const auto warning_of = [&](const nlohmann::json& section) {
+      if (section.is_object() && section.contains("warning") && section["warning"].is_string())
+        warnings.push_back(section["warning"].get<std::string>());
+    };
+    if (const auto window = s.sections.find("steady_window"); window != s.sections.end()) {
+      warning_of(*window);
+      if (window->is_object() && window->contains("drift")) warning_of((*window)["drift"]);
+    }
     if (const std::string w = energy_residual_warning(s.energy_relative_residual); !w.empty()) warnings.push_back(w);
     for (const std::string& w : warnings) r.message += (r.message.empty() ? "warning: " : "; warning: ") + w;
   }
