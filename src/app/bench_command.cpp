@@ -48,16 +48,25 @@ struct Timing {
   }
 };
 
+// Below this a timing is mostly thread start-up, cache warm-up and the scheduler: 5 steps of 100 particles
+// (a few ms) gave a "speed-up" of 33x on 2 cores.
+constexpr double kShortestMeaningfulTiming_s = 0.2;
+
 // One line per thread count: particle-steps/s by wall clock and per thread, and by CPU time.
 void report(int threads, std::size_t particles, long steps, const Timing& t, double& single_rate, const std::string& extra) {
   const double work = static_cast<double>(particles) * static_cast<double>(steps);
   const double rate = work / t.wall;
   if (threads == 1) single_rate = rate;
   const std::string speedup = single_rate > 0 && threads > 1 ? fmt::format(", speed-up {:.2f}x", rate / single_rate) : "";
+  const std::string too_short =
+      t.wall < kShortestMeaningfulTiming_s
+          ? fmt::format(" [timed stretch under {:g} s: noise, not a speed; raise --steps or --particles]",
+                        kShortestMeaningfulTiming_s)
+          : "";
   std::cout << fmt::format(
       "  threads {:2d}: {:8d} particles x {} steps in {:.3f} s: {:.3g} particle-steps/s, {:.3g} per thread; "
-      "CPU {:.3f} s: {:.3g} particle-steps per CPU-second{}{}\n",
-      threads, particles, steps, t.wall, rate, rate / threads, t.cpu, work / t.cpu, speedup, extra);
+      "CPU {:.3f} s: {:.3g} particle-steps per CPU-second{}{}{}\n",
+      threads, particles, steps, t.wall, rate, rate / threads, t.cpu, work / t.cpu, speedup, extra, too_short);
 }
 
 // Ti-6Al-4V, Johnson 1985 set from the built-in library (JC flow, heating, JC damage + Hillerborg).

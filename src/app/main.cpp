@@ -1,6 +1,7 @@
 // mpmcut: the command-line program. Parses the command line, loads the case, and hands over to
 // run_case / resume_case / run_benchmark. Errors in the input are the user's: a clear message, exit code 2.
 #include <algorithm>
+#include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -36,6 +37,17 @@ int with_pictures(int code, bool cutting, bool no_plots, const std::string& out_
   if (code == kExitComplete && program_stop_token().stop_requested()) {
     std::cerr << "interrupted after the run completed: results complete, pictures not drawn\n";
     return kExitInterrupted;
+  }
+  if (code == kExitComplete && cutting && no_plots) {
+    // Pictures drawn before (by `mpmcut plot` on the interrupted run) would now show an earlier state.
+    int pictures = 0;
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(out_dir, ec))
+      if (entry.path().extension() == ".png") ++pictures;
+    if (pictures > 0)
+      std::cerr << "note: the " << pictures << " .png picture(s) in " << out_dir
+                << " were drawn before this run ended and are not redrawn (--no-plots): mpmcut plot " << out_dir
+                << " draws them for the final state\n";
   }
   if (code == kExitComplete && cutting && !no_plots) {
     std::string why;

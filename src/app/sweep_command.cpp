@@ -196,6 +196,9 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
                            o.threads, out.string())
             << std::flush;
   const bool completed = run_cases(runs, jobs, true);
+  // Whether the plots will be drawn, known before sweep.md says which there are.
+  std::string no_plotting;
+  const bool plotting = !o.no_plots && completed && python_plotting_available(false, no_plotting);
 
   // The chip analysis, where the program has it and the runs did not do it themselves.
   if (completed && has_subcommand(app, "analyze")) {
@@ -327,6 +330,9 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
     if (o.no_plots || !completed)
       s << "Plots: none (" << (o.no_plots ? "--no-plots" : "an interrupted sweep") << "; `mpmcut sweep` again without "
         << "--no-plots over this directory draws them, its complete cases kept). ";
+    else if (!plotting)
+      s << "Plots: none (" << no_plotting << "; `mpmcut sweep` again over this directory once it is installed draws "
+        << "them, its complete cases kept). ";
     else if (resolutions.size() > 1)
       s << "Plots: convergence.png (each quantity against the cells across h). ";
     else
@@ -336,9 +342,8 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
   std::cout << "wrote " << (out / "sweep.csv").string() << " and " << (out / "sweep.md").string() << "\n";
 
   if (!o.no_plots && completed) {  // an interrupted sweep stops here: no plots of a partial sweep
-    std::string why;
-    if (!python_plotting_available(false, why)) {
-      std::cerr << "warning: no sweep plots: " << why << "\n";
+    if (!plotting) {
+      std::cerr << "warning: no sweep plots: " << no_plotting << "\n";
     } else {
       const char* tool = resolutions.size() > 1 ? "plot_convergence.py" : "plot_sweep.py";
       if (int code = run_python_tool(tool, {out.string()}); code != 0)

@@ -124,15 +124,29 @@ void read_material_keys(TableReader& t, MaterialParameters& m, bool full_definit
     t.check(a.key, *value, a.range);
     const double converted = a.convert(*value, m);
     for_each_parameter_table([&]<class P>(const ParameterTable<P>& table) {
-      for (const Parameter<P>& row : table.parameters)
-        if (row.key == a.replaces && row.number) static_cast<P&>(m).*row.number = converted;
+      for (const Parameter<P>& row : table.parameters) {
+        if (row.key != a.replaces || !row.number) continue;
+        // Reported here, at the key the user gave, with what the conversion read: a modulus in GPa gives a
+        // fracture energy 1e9 times too large, which the replaced key's own check would blame on a key not written.
+        if (const Range r = row.range_at(m); in_use(row.use, m) && !r.contains(converted))
+          t.fail(a.key, fmt::format("{} = {:g} {} with this material's {} gives {} = {:.4g} {}, which must be {}: "
+                                    "check the units of these keys",
+                                    a.key, *value, a.unit, a.inputs(m), a.replaces, converted, row.unit, r.text()));
+        static_cast<P&>(m).*row.number = converted;
+      }
     });
   }
 }
 
 void check_material_keys(TableReader& t, const MaterialParameters& m) {
   const std::vector<ParameterProblem> problems = parameter_problems(m);
-  if (!problems.empty()) t.check(problems.front().key, false, problems.front().allowed, problems.front().value);
+  if (problems.empty()) return;
+  const ParameterProblem& p = problems.front();
+  // A value this table did not give came from its library set (a set's damage = true after model = "elastic").
+  if (!t.has(p.key) && t.has("library"))
+    t.fail(p.key, fmt::format("must be {}, got {} from the library set \"{}\": give {} in this [[material]]", p.allowed,
+                              shown_value(p), t.string("library", ""), p.key));
+  t.check(p.key, false, p.allowed, p.value);
 }
 
 void write_material_keys(const MaterialParameters& m, std::ostream& out) {

@@ -128,7 +128,17 @@ void apply_override(toml::table& root, const std::string& text, InputSource& sou
       continue;
     }
     toml::array* array = child ? child->as_array() : nullptr;
-    if (array == nullptr) throw InputError(prefix + fmt::format("'{}' is not an array in the case", walked));
+    if (array == nullptr) {
+      std::string hint;
+      // A cut of a library set has no [[material]] to override: say how to make one.
+      if (walked == "material")
+        if (const toml::node* set = root.at_path("cutting.material").node(); set && set->is_string())
+          hint = fmt::format("; this case cuts the library set \"{0}\": to change its keys, add to the case\n"
+                             "  [[material]]\n  name = \"{0}\"\n  library = \"{0}\"\n"
+                             "and set the key there or with --set 'material[0].KEY=VALUE'",
+                             set->value_or(std::string()));
+      throw InputError(prefix + fmt::format("'{}' is not an array in the case{}", walked, hint));
+    }
     if (*step.index >= array->size())
       throw InputError(prefix + fmt::format("index {} is out of range: '{}' has {} entries", *step.index, walked,
                                             array->size()));

@@ -36,8 +36,12 @@ inline const ParameterTable<DamageParameters>& damage_parameter_table() {
       {
           flag("damage", &P::damage_enabled, "JC damage initiation + Hillerborg evolution")
               .used_with(InUse::JohnsonCook),
-          number("jc_D1", &P::jc_D1, "-", D, "eps_f = (D1 + D2 exp(D3 eta))(1 + D4 ln epsdot*)(1 + D5 T*)").capped_below(),
-          number("jc_D2", &P::jc_D2, "-", D, "D2").capped_below(),
+          // D1 and D2 set the failure strain's level: left out, it would be 0, clamped silently to min_failure_strain.
+          number("jc_D1", &P::jc_D1, "-", D, "eps_f = (D1 + D2 exp(D3 eta))(1 + D4 ln epsdot*)(1 + D5 T*)")
+              .capped_below()
+              .used_with(InUse::Damage)
+              .required_key(),
+          number("jc_D2", &P::jc_D2, "-", D, "D2").capped_below().used_with(InUse::Damage).required_key(),
           number("jc_D3", &P::jc_D3, "-", D, "D3").capped_below(),
           number("jc_D4", &P::jc_D4, "-", D, "D4").capped_below(),
           number("jc_D5", &P::jc_D5, "-", D, "D5").capped_below(),

@@ -26,7 +26,8 @@ inline const ParameterTable<EquationOfStateParameters>& equation_of_state_parame
           choice<P, &P::eos>("eos", {"linear", "mie_gruneisen"}, "pressure model"),
           number("mg_c0", &P::mg_c0, "m/s", Range::open_closed(0.0, 1e5, "", "with eos = \"mie_gruneisen\""),
                  "bulk sound speed c_0")
-              .used_with(InUse::MieGruneisen),
+              .used_with(InUse::MieGruneisen)
+              .required_key(),
           number("mg_s", &P::mg_s, "-", Range::closed(0.0, 10.0), "Hugoniot slope s").used_with(InUse::MieGruneisen),
           number("mg_gamma0", &P::mg_gamma0, "-", Range::closed(0.0, 10.0), "Grueneisen Gamma_0")
               .used_with(InUse::MieGruneisen),

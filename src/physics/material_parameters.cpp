@@ -27,7 +27,8 @@ bool in_use(InUse use, const MaterialParameters& m) {
     case InUse::Always: return true;
     case InUse::JohnsonCook: return m.model == MaterialModel::JohnsonCook;
     case InUse::MieGruneisen: return m.eos == EquationOfState::MieGruneisen;
-    case InUse::Damage: return m.damage_enabled;
+    // The damage switch is itself in use only for johnson_cook (on an elastic set it is the error, not its keys).
+    case InUse::Damage: return m.model == MaterialModel::JohnsonCook && m.damage_enabled;
     case InUse::RateDependentFractureEnergy: return m.fracture_transition_strain_rate > 0.0;
     case InUse::TanhSoftening: return m.model == MaterialModel::JohnsonCook && m.flow_softening == FlowSoftening::Tanh;
   }
@@ -58,6 +59,9 @@ const std::vector<AlternativeKey>& alternative_keys() {
        "K_IC; sets G_f = K_IC^2 (1 - nu^2)/E (plane strain), with this material's final E and nu",
        [](double k, const MaterialParameters& m) {
          return fracture_energy_from_toughness(k, m.youngs_modulus, m.poisson_ratio);
+       },
+       [](const MaterialParameters& m) {
+         return fmt::format("youngs_modulus = {:g} Pa and poisson_ratio = {:g}", m.youngs_modulus, m.poisson_ratio);
        }},
   };
   return keys;
@@ -91,7 +95,8 @@ std::vector<ParameterProblem> parameter_problems(const ParameterTable<P>& table,
         break;
       }
       case Parameter<P>::Kind::Flag:
-        if (!used && p.*row.flag) out.push_back({std::string(row.key), fmt::format("false unless {}", describe(row.use)), 1.0});
+        if (!used && p.*row.flag)
+          out.push_back({std::string(row.key), fmt::format("false unless {}", describe(row.use)), 1.0, true});
         break;
       case Parameter<P>::Kind::Choice:
         break;  // the reader accepts only the listed names
@@ -129,11 +134,15 @@ std::vector<ParameterProblem> parameter_problems(const MaterialParameters& m, Ch
   return problems;
 }
 
+std::string shown_value(const ParameterProblem& p) {
+  return p.is_flag ? (p.value != 0.0 ? "true" : "false") : fmt::format("{}", p.value);
+}
+
 void throw_first_problem(const MaterialParameters& m, const std::vector<ParameterProblem>& problems) {
   if (problems.empty()) return;
   const ParameterProblem& p = problems.front();
   throw std::invalid_argument(
-      fmt::format("material '{}': key '{}': must be {}, got {}", m.name, p.key, p.allowed, p.value));
+      fmt::format("material '{}': key '{}': must be {}, got {}", m.name, p.key, p.allowed, shown_value(p)));
 }
 
 }  // namespace mpmcut

@@ -67,6 +67,8 @@ struct AlternativeKey {
   Range range;
   std::string_view doc;
   double (*convert)(double value, const MaterialParameters& m);
+  // The other parameters the conversion reads, named in the error when the converted value is out of its range.
+  std::string (*inputs)(const MaterialParameters& m);
 };
 const std::vector<AlternativeKey>& alternative_keys();
 
@@ -78,7 +80,10 @@ struct ParameterProblem {
   std::string key;
   std::string allowed;
   double value = 0.0;
+  bool is_flag = false;  // value is 0 or 1 for false or true
 };
+// The value as a message shows it: "true" for a flag, the number otherwise.
+std::string shown_value(const ParameterProblem& p);
 // What is checked: everything (the input reader), or the model's limits only, without the ranges'
 // caps (the physics constructors; Parameter::max_is_cap).
 enum class Check { Input, ModelLimits };

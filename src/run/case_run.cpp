@@ -11,6 +11,7 @@
 
 #include "cutting/cutting_resolution.hpp"
 #include "cutting/cutting_scene.hpp"
+#include "cutting/input_plausibility.hpp"
 #include "run/case_loading.hpp"
 #include "run/mass_scaling_report.hpp"
 
@@ -99,6 +100,7 @@ void CaseRun::begin() {
     std::cerr << console_lines(
         cutting_resolution(*cutting_, workpiece_thermal_diffusivity_m2_per_s(*cutting_, sim_.scene())));
     if (const std::string w = steady_window_warning(*cutting_); !w.empty()) std::cerr << "warning: " << w << "\n";
+    for (const std::string& w : input_plausibility_warnings(*cutting_, sim_.scene())) std::cerr << "warning: " << w << "\n";
   }
 }
 

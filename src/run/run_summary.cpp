@@ -10,6 +10,7 @@
 
 #include "cutting/cutting_forces.hpp"
 #include "cutting/cutting_resolution.hpp"
+#include "cutting/input_plausibility.hpp"
 #include "run/mass_scaling_report.hpp"
 #include "solver/simulation.hpp"
 
@@ -121,9 +122,11 @@ RunSummary summarize(const Simulation& sim, const std::optional<CuttingParameter
       s.energy_residual_J_per_m / std::max(std::abs(e.initial) + std::abs(e.external_work), 1e-300);
   s.max_temperature_K = sim.max_temperature();
   s.sections["mass_scaling"] = to_json(mass_scaling_report(sim, cutting));
-  if (cutting)
+  if (cutting) {
     s.sections["cutting_resolution"] =
         to_json(cutting_resolution(*cutting, workpiece_thermal_diffusivity_m2_per_s(*cutting, sim.scene())));
+    s.sections["input_warnings"] = input_plausibility_warnings(*cutting, sim.scene());
+  }
   for (const auto& r : sim.rigid_bodies())
     s.rigid_bodies.push_back({r.name, r.force, r.impulse, r.displacement, r.work});
   if (sim.removed_particles() > 0) {

@@ -288,6 +288,10 @@ CaseResult read_case_result(const fs::path& dir, const fs::path& log_file, int e
       if (section.is_object() && section.contains("warning") && section["warning"].is_string())
         warnings.push_back(section["warning"].get<std::string>());
     };
+    // The inputs first: a value in the wrong unit makes every other number wrong.
+    if (const auto inputs = s.sections.find("input_warnings"); inputs != s.sections.end() && inputs->is_array())
+      for (const nlohmann::json& w : *inputs)
+        if (w.is_string()) warnings.push_back(w.get<std::string>());
     if (const auto window = s.sections.find("steady_window"); window != s.sections.end()) {
       warning_of(*window);
       if (window->is_object() && window->contains("drift")) warning_of((*window)["drift"]);

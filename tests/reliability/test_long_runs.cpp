@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <fstream>
 
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
@@ -273,8 +274,13 @@ TEST_F(LongRuns, CutResumedInsideItsSteadyWindowKeepsTheToolResults) {
   const long steps = expected.at("steps").get<long>();
   // Interrupt inside the window, at a checkpoint past 70 % of the steps.
   EXPECT_EQ(run_and_signal("interrupted", steps * 7 / 10, SIGINT), 130);
-  const CliResult r = resume("interrupted");
+  // A picture drawn of the interrupted state (mpmcut plot) is not redrawn by resume --no-plots: it says so.
+  std::ofstream(out("interrupted") / "forces.png") << "drawn before the resume";
+  const CliResult r = resume("interrupted", {"--no-plots"});
   ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("1 .png picture(s) in " + out("interrupted").string() + " were drawn before this run ended"),
+            std::string::npos)
+      << r.output;
   const nlohmann::json actual = nlohmann::json::parse(read_file(out("interrupted") / "summary.json"));
   ASSERT_TRUE(expected.contains("rake_face")) << expected.dump(2);
   ASSERT_TRUE(expected["rake_face"].contains("friction_work_per_travel_N_per_mm")) << expected.dump(2);

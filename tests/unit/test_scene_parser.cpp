@@ -438,6 +438,16 @@ TEST(SceneOverrides, UnknownKeysAndBadValuesNameTheOverride) {
   EXPECT_NE(m.find("--set 'solver.scheme=usf'"), std::string::npos) << m;
 }
 
+// A cut of a library set has no [[material]] array: the error says how to override the set's keys.
+TEST(SceneOverrides, AMaterialOverrideOnACutOfALibrarySetSaysHowToMakeOne) {
+  const std::string cut = "[cutting]\nmaterial = \"ti64-cutting\"\ncutting_speed = 20.0\nuncut_chip_thickness = 0.1e-3\n";
+  const std::string m = error_of(cut, {"material[0].jc_A=1e9"});
+  EXPECT_NE(m.find("'material' is not an array in the case; this case cuts the library set \"ti64-cutting\""),
+            std::string::npos) << m;
+  EXPECT_NE(m.find("library = \"ti64-cutting\""), std::string::npos) << m;
+  EXPECT_EQ(error_of(kBase, {"rigid_body[0].friction=0.1"}).find("library set"), std::string::npos);
+}
+
 // --- materials in scenes ----------------------------------------------------------------------
 
 TEST(SceneMaterials, LibrarySetWithPerKeyOverride) {
@@ -465,6 +475,49 @@ TEST(SceneMaterials, FractureToughnessBecomesFractureEnergy) {
                "fracture_toughness", {"key 'material[0].fracture_toughness'", "not both"});
   expect_error(edit("library = \"elastic-unit\"", "library = \"ti64-johnson-1985\"\nfracture_energy = 0"),
                "fracture_energy", {"key 'material[0].fracture_energy'", "when damage = true"});
+}
+
+// A converted key out of its range is reported at the key the user gave, with the keys the conversion read: a
+// modulus in GPa made the fracture energy 1e9 times too large, reported at fracture_energy, a key not written.
+TEST(SceneMaterials, AToughnessGivingAnImpossibleEnergyIsReportedAtItsKeyWithTheModulus) {
+  expect_error(edit("library = \"elastic-unit\"",
+                    "library = \"ti64-johnson-1985\"\nyoungs_modulus = 113.8\nfracture_toughness = 65.0e6"),
+               "fracture_toughness",
+               {"key 'material[0].fracture_toughness'", "youngs_modulus = 113.8 Pa", "fracture_energy = 3.278e+13 J/m^2",
+                "check the units"});
+}
+
+// A full definition names what its switches need: damage = true needs D1 and D2 (left out, the failure strain
+// was 0, clamped silently to min_failure_strain), eos = "mie_gruneisen" needs mg_c0 (it said "got 0").
+TEST(SceneMaterials, AFullDefinitionNeedsTheKeysItsSwitchesUse) {
+  const std::string full = R"(name = "m"
+model = "johnson_cook"
+density = 4430.0
+youngs_modulus = 113.8e9
+poisson_ratio = 0.34
+specific_heat = 526.0
+melting_temperature = 1878.0
+jc_A = 1.0e9
+jc_B = 1.0e9
+jc_n = 0.3
+jc_C = 0.01
+jc_m = 1.0
+reference_strain_rate = 1.0
+)";
+  const auto with = [&](const std::string& more) { return edit("name = \"m\"\nlibrary = \"elastic-unit\"\n", full + more); };
+  EXPECT_NO_THROW(parse_scene(with(""), "case.toml"));
+  expect_error(with("damage = true\nfracture_energy = 1.0e4\njc_D2 = 0.3\n"), "[[material]]",
+               {"missing required key 'jc_D1'", "needed by damage = true"});
+  EXPECT_NO_THROW(parse_scene(with("damage = true\nfracture_energy = 1.0e4\njc_D1 = -0.09\njc_D2 = 0.25\n"), "case.toml"));
+  expect_error(with("eos = \"mie_gruneisen\"\nmg_s = 1.2\n"), "[[material]]",
+               {"missing required key 'mg_c0'", "needed by eos = \"mie_gruneisen\""});
+}
+
+// A value a library set brings that the case's switch forbids is reported as the set's, and a flag as a flag.
+TEST(SceneMaterials, ALibrarySetsValueThatNoLongerFitsSaysWhereItCameFrom) {
+  expect_error(edit("library = \"elastic-unit\"", "library = \"ti64-johnson-1985\"\nmodel = \"elastic\""), "[[material]]",
+               {"must be false unless model = \"johnson_cook\", got true from the library set \"ti64-johnson-1985\"",
+                "give damage in this [[material]]"});
 }
 
 TEST(SceneMaterials, ConductionNeedsHeatCapacity) {

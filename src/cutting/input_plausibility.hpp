@@ -1,0 +1,42 @@
+#pragma once
+// Warnings on a cut's inputs that the keys' ranges accept but that no machined metal has: most often a
+// number given in another unit than its key's (a density in g/cm^3, a yield stress in MPa, a temperature
+// in degrees Celsius, a toughness in MPa sqrt(m)). Such a cut runs to "complete" with numbers that are
+// wrong by orders of magnitude, so the run says so: on the console at its start, in summary.json
+// (`input_warnings`) and in a study's message. They are warnings, not errors: a model material may mean
+// them. Each names the key, its value with the unit, what is usual, and the likely slip.
+#include <string>
+#include <vector>
+
+#include "cutting/cutting_parameters.hpp"
+#include "physics/material_parameters.hpp"
+#include "solver/scene.hpp"
+
+namespace mpmcut {
+
+// Bounds of what a machined metal has (with a margin), each from handbook values (docs/references.md:
+// ASM Handbook Vol. 2, CRC Handbook): the lightest structural metal is magnesium (1740 kg/m^3), the densest
+// osmium (22 590); Young's moduli run from lead (16 GPa) to tungsten (411 GPa); specific heats from lead
+// (129 J/(kg K)) to magnesium (1020); Johnson-Cook A + B, the flow stress at a plastic strain of 1, lies at
+// 0.3-2 % of E (OFHC copper 382 MPa / 124 GPa, Ti-6Al-4V 1881 MPa / 114 GPa, 4340 steel 1302 MPa / 200 GPa);
+// the fracture energy of a metal is 1e3-1e5 J/m^2, of glass about 10.
+struct MetalPlausibility {
+  double min_density_kg_m3 = 1000.0;
+  double max_density_kg_m3 = 25000.0;
+  double min_youngs_modulus_Pa = 5e9;
+  double max_youngs_modulus_Pa = 1.2e12;
+  double min_specific_heat_J_kgK = 50.0;
+  double max_specific_heat_J_kgK = 5000.0;
+  double min_flow_stress_over_E = 1e-4;  // (A + B) / E
+  double max_flow_stress_over_E = 0.1;
+  double min_fracture_energy_J_m2 = 1.0;
+  double min_temperature_K = 150.0;  // below: a temperature in degrees Celsius?
+};
+
+std::vector<std::string> input_plausibility_warnings(const CuttingParameters& c, const MaterialParameters& workpiece,
+                                                     const MetalPlausibility& bounds = {});
+
+// The same for the workpiece of a scene built from `c` (none if the scene has no such material).
+std::vector<std::string> input_plausibility_warnings(const CuttingParameters& c, const Scene& scene);
+
+}  // namespace mpmcut
