@@ -273,6 +273,12 @@ void add_validate_command(CLI::App& app) {
                 "status, rake_deg, clearance_deg, width_mm: forces in N are divided by it, else b = 1 mm is assumed); the "
                 "conditions are then its rows "
                 "(docs/results.md)");
+  v->add_option("--chip-observations", o->chip_observations,
+                "Compare the chip type with your own observations instead of the built-in statements: a CSV in the "
+                "layout of data/experiments/ti64_chip_morphology.csv (columns id, chip_type = continuous | serrated | "
+                "discontinuous | serrated->discontinuous, simulate_speed_m_per_s (blank: not simulated), h_min_mm; "
+                "optional rake_deg, clearance_deg, edge_radius_um, statement, source, tag, note); each row with a "
+                "speed is run at h_min_mm and its simulated chip type compared (docs/results.md)");
   v->add_option("--material-file", o->material_file,
                 "A TOML file of [[material]] sets (as materials/*.toml, or the best_material.toml of `mpmcut "
                 "calibrate`): --material may name one of them (a file of one set needs no --material); every case "

@@ -81,14 +81,30 @@ std::optional<double> Condition::cells_per_thermal_length(double kappa) const {
   return result.cell_size_um && l_th > 0.0 ? std::optional<double>(l_th / (*result.cell_size_um * 1e-6)) : std::nullopt;
 }
 
-ForceData force_data(const Options& o) {
-  if (o.measurements.empty())
-    return {read_data_file(embedded_tool_file(kForcesFile), kForcesFile), kForcesSource, true};
-  std::ifstream in(o.measurements, std::ios::binary);
-  if (!in) throw InputError(fmt::format("--measurements {}: cannot read the file", o.measurements));
+namespace {
+
+DataFile read_user_file(const std::string& option, const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(fmt::format("{} {}: cannot read the file", option, path));
   std::stringstream text;
   text << in.rdbuf();
-  return {read_data_file(text.str(), o.measurements), o.measurements + " (--measurements)", false};
+  return read_data_file(text.str(), path);
+}
+
+}  // namespace
+
+ForceData force_data(const Options& o) {
+  ForceData data = o.measurements.empty()
+                       ? ForceData{read_data_file(embedded_tool_file(kForcesFile), kForcesFile), kForcesSource, true}
+                       : ForceData{read_user_file("--measurements", o.measurements),
+                                   o.measurements + " (--measurements)", false};
+  if (!o.chip_observations.empty()) {
+    data.chip_file = read_user_file("--chip-observations", o.chip_observations);
+    data.chips_builtin = false;
+  } else if (o.measurements.empty()) {
+    data.chip_file = read_data_file(embedded_tool_file(kChipFile), kChipFile);
+  }
+  return data;
 }
 
 std::string join(const std::vector<std::string>& parts, const std::string& sep) {
@@ -154,18 +170,19 @@ std::vector<Condition> matrix_conditions(const ConditionRunSettings& settings, c
                                    data.file.source, m.line, c.id, it->second));
     conditions.push_back(c);
   }
-  for (const DataFile::Row& row : data.builtin ? read_data_file(embedded_tool_file(kChipFile), kChipFile).rows
-                                               : std::vector<DataFile::Row>{}) {
-    const auto& r = row.cells;
-    const double v = num(r, "simulate_speed_m_per_s");
-    if (!std::isfinite(v)) continue;
+  for (const ChipObservation& o : data.chip_file ? read_chip_observations(*data.chip_file)
+                                                 : std::vector<ChipObservation>{}) {
+    if (!o.simulate_speed_m_per_s) continue;
     Condition c;
-    c.id = fmt::format("chip_{}_v{:g}mps", r.at("id"), v);
+    c.id = fmt::format("chip_{}_v{:g}mps", o.id, *o.simulate_speed_m_per_s);
     c.kind = "chip";
-    c.speed_m_per_s = v;
-    c.h_mm = 0.1;  // the lower end of the source's h range, as in the force data
-    c.edge_radius_um = 5.0;
-    c.chip = r;
+    c.speed_m_per_s = *o.simulate_speed_m_per_s;
+    c.h_mm = o.h_mm;  // the lower end of the source's h range
+    c.edge_radius_um = o.edge_radius_um.value_or(kChipConditionEdgeRadius_um);
+    c.edge_radius_given = o.edge_radius_um.has_value();
+    c.rake_deg = o.rake_deg;
+    c.clearance_deg = o.clearance_deg;
+    c.chip = o;
     conditions.push_back(c);
   }
   for (Condition& c : conditions) c.case_text = condition_case_text(c, settings);
@@ -202,7 +219,9 @@ void select_conditions(std::vector<Condition>& all, const Options& o) {
   for (Condition& c : all) {
     if (!filtered) {
       const auto& quick = quick_condition_ids();
-      c.selected = !o.quick || !o.measurements.empty() || std::find(quick.begin(), quick.end(), c.id) != quick.end();
+      // --quick: the quick subset of the built-in matrix; every condition of a user's file (forces or chips).
+      const bool users = c.kind == "forces" ? !o.measurements.empty() : !o.chip_observations.empty();
+      c.selected = !o.quick || users || std::find(quick.begin(), quick.end(), c.id) != quick.end();
       continue;
     }
     c.selected =
@@ -232,14 +251,15 @@ std::string resolution_text(const Options& o) {
       "by the preset so that the machined surface lies on a row of grid nodes (docs/cutting.md, \"Grid phase of the "
       "tool tip\")",
       o.cells_per_feed, o.cells_per_edge_radius, thermal,
-      o.measurements.empty()  // with a user's file there are no chip-type conditions
-          ? fmt::format("; chip-type conditions at t0/{} (the least the chip analysis needs to resolve segments; their "
-                        "5 µm edge is the preset's, not measured, and sets no limit)",
-                        chip_cells_per_feed(o.cells_per_feed))
+      o.measurements.empty() || !o.chip_observations.empty()  // with a user's force file alone there are none
+          ? fmt::format("; chip-type conditions at t0/{} (the least the chip analysis needs to resolve segments; an "
+                        "edge radius the observations give is resolved as a force condition's, the preset's {:g} µm "
+                        "where they give none sets no limit)",
+                        chip_cells_per_feed(o.cells_per_feed), kChipConditionEdgeRadius_um)
           : std::string());
 }
 
-// The tool's angles of a force condition as the measurements give them ("" where they give none).
+// The tool's angles of a condition as the measurements give them ("" where they give none).
 std::string tool_text(const Condition& c) {
   std::string t = c.rake_deg ? fmt::format("rake {:g}°", *c.rake_deg) : "";
   if (c.clearance_deg) t += (t.empty() ? "" : ", ") + fmt::format("clearance {:g}°", *c.clearance_deg);

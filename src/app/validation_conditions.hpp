@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "studies/case_runs.hpp"
+#include "studies/chip_observations.hpp"
 #include "studies/measured_conditions.hpp"
 
 namespace mpmcut::validation {
@@ -38,19 +39,25 @@ struct Options {
   // --measurements: a force file of the user's in the layout of data/experiments (then the matrix is its rows, without
   // the chip-type conditions); empty: the built-in Klippel et al. file and the chip-type conditions.
   std::string measurements;
+  // --chip-observations: observed chip types in the layout of data/experiments/ti64_chip_morphology.csv, simulated
+  // and compared beside the forces; empty: the built-in statements with the built-in force data, none with a user's.
+  std::string chip_observations;
 };
 
-// The force measurements the conditions come from: the user's file or the built-in one.
+// The measurements the conditions come from: forces from the user's file or the built-in one, and chip types from
+// the user's file, the built-in one, or none.
 struct ForceData {
   DataFile file;
   std::string source;  // what the report's source column says
   bool builtin = true;
+  std::optional<DataFile> chip_file;  // none: no chip-type conditions
+  bool chips_builtin = true;
 };
 
 // One condition of the matrix: what the run is for, which measurement it is compared with, and its result.
 struct Condition : CuttingCondition {
   std::optional<MeasuredForces> measured;   // force conditions; forces per mm of width (MeasuredForces::per_mm_of_width)
-  std::map<std::string, std::string> chip;  // the ti64_chip_morphology.csv row for chip conditions
+  std::optional<ChipObservation> chip;      // chip conditions: the observation (ti64_chip_morphology.csv layout)
   std::string case_text;
   bool selected = false;                    // run by this invocation
   // "this run" | "earlier run" (complete in --out, same scene) | "record" (complete in --records, same scene) |
@@ -82,15 +89,16 @@ struct Condition : CuttingCondition {
 // The thickness the report's Fc(h) ratios refer to, mm.
 constexpr double kReferenceH_mm = 0.1;
 
-// The force data of the options: --measurements or the built-in file. InputError for an unreadable file.
+// The data of the options: --measurements or the built-in force file; --chip-observations, the built-in chip file
+// (with the built-in forces) or none. InputError for an unreadable file.
 ForceData force_data(const Options& o);
 
 // What every case runs with: resolution rule, material (a library set or --material-file's, with --material-key
 // changes), friction, the tool's heat and the contact detection. InputError for a bad set, file or key.
 ConditionRunSettings run_settings(const Options& o);
 
-// Every condition of the force data (all rows, every status) and, with the built-in data, the chip-type rows that
-// name a speed to simulate, each with its case text. InputError for two rows of one condition.
+// Every condition of the force data (all rows, every status) and the chip-type rows that name a speed to simulate,
+// each with its case text. InputError for two rows of one condition or a bad chip-type row.
 std::vector<Condition> matrix_conditions(const ConditionRunSettings& settings, const ForceData& data);
 
 // Marks the conditions this invocation runs (Condition::selected). Filters given together must all match; a
@@ -104,7 +112,7 @@ bool same_h(double a, double b);
 bool same_speed(double a, double b);
 // Conditions cut with the same tool angles (as far as the measurements give them).
 bool same_tool(const Condition& a, const Condition& b);
-// The tool's angles of a force condition as the measurements give them ("" where they give none).
+// The tool's angles of a condition as the measurements give them ("" where they give none).
 std::string tool_text(const Condition& c);
 
 std::string join(const std::vector<std::string>& parts, const std::string& sep);

@@ -228,6 +228,16 @@ struct Comparison {
   std::vector<ThicknessRatio> thickness_ratios;  // Fc(h)/Fc(0.1 mm), measured and simulated
 };
 
+// Whether a complete chip-type condition's simulated chip is the observed one ("yes" / "no"; "" without a simulated
+// type). An observed "serrated->discontinuous" (a transition within the source's range) admits either.
+std::string chip_type_agreement(const Condition& c) {
+  const std::string& sim = c.result.chip_classification;
+  if (!c.complete() || sim.empty() || !c.chip) return "";
+  const std::string& seen = c.chip->chip_type;
+  const bool agrees = sim == seen || (seen == "serrated->discontinuous" && (sim == "serrated" || sim == "discontinuous"));
+  return agrees ? "yes" : "no";
+}
+
 Comparison compare(const std::vector<Condition>& conditions, const ForceData& data, const fs::path& out) {
   Comparison k;
   TextTable& table = k.table;
@@ -292,11 +302,15 @@ Comparison compare(const std::vector<Condition>& conditions, const ForceData& da
     const std::string sim = c.result.status != "complete" ? c.result.status
                             : c.result.chip_classification.empty() ? "n/a (no chip analysis in summary.json)"
                                                                    : c.result.chip_classification;
-    table.rows.push_back({fmt::format("h = 0.1 mm, V = {:g} m/s ({:g} m/min), rake 0° (assumed)", c.speed_m_per_s,
-                                      c.speed_m_per_min()),
-                          "chip type", "-", c.chip.at("chip_type"), "", "", sim, "", "",
-                          c.chip.at("statement") + " (" + c.chip.at("note") + ")",
-                          c.chip.at("source") + " [" + c.chip.at("tag") + "]"});
+    const ChipObservation& seen = *c.chip;
+    const std::string tool = tool_text(c);
+    const std::string note = seen.cell("note");
+    const std::string tag = seen.cell("tag");
+    table.rows.push_back({fmt::format("h = {:g} mm, V = {:g} m/s ({:g} m/min), {}", c.h_mm, c.speed_m_per_s,
+                                      c.speed_m_per_min(), tool.empty() ? "rake 0° (assumed)" : tool),
+                          "chip type", "-", seen.chip_type, "", "", sim, "", chip_type_agreement(c),
+                          seen.cell("statement") + (note.empty() ? "" : " (" + note + ")"),
+                          seen.cell("source") + (tag.empty() ? "" : " [" + tag + "]")});
   }
   table.write_csv(out / "validation.csv");
   return k;
@@ -505,8 +519,8 @@ std::string assumptions_section(const ReportParts& r) {
 }
 
 // What the report says of the built-in data where they disagree or are thin.
-const char* builtin_data_notes() {
-  return "## Where the data disagree or are thin\n\n"
+std::string builtin_data_notes(bool builtin_chips) {
+  return std::string("## Where the data disagree or are thin\n\n") +
        "- At h = 0.1 mm and nearly equal speeds the Klippel condition means differ by more than the scatter "
        "within a condition: 222.8 N at 10 m/min (r_n 40.8 µm) vs 209.2 N at 10.5 m/min (r_n 29.4 µm); tests marked "
        "`short` (74.3, 88.9, 159–381 m/min) lie 5–10 % below neighbouring `ok` tests. The edge radius and the "
@@ -516,11 +530,13 @@ const char* builtin_data_notes() {
        "ploughing); Ducobu, Pantalé & Lauwers (CIRP JMST, [V]) report Ff ≈ 46 % of Fc at h = 40 µm, 10 m/min, with "
        "a 15° rake, r_β = 20 µm tool in oblique cutting (λs = 6°). The two do not contradict each other — tool "
        "geometry differs — but they show how strongly Ft/Fc depends on rake and edge radius, which this "
-       "comparison had to assume.\n"
-       "- Chip type: Sutter & List (2013) [A] state serrated chips at the lower speeds of 5–75 m/s and "
-       "discontinuous chips at very high speed without the transition speed in the abstract; Ducobu et al. [V] "
-       "saw only continuous chips at 5–40 m/min with a 15° rake (not simulated: below 1 m/s the explicit run is "
-       "too long, and the tool differs).\n\n";
+       "comparison had to assume.\n" +
+       (builtin_chips
+            ? "- Chip type: Sutter & List (2013) [A] state serrated chips at the lower speeds of 5–75 m/s and "
+              "discontinuous chips at very high speed without the transition speed in the abstract; Ducobu et al. [V] "
+              "saw only continuous chips at 5–40 m/min with a 15° rake (not simulated: below 1 m/s the explicit run is "
+              "too long, and the tool differs).\n\n"
+            : "\n");
 }
 
 void write_markdown(const ReportParts& r) {
@@ -573,6 +589,13 @@ void write_markdown(const ReportParts& r) {
                      std::count_if(conditions.begin(), conditions.end(), [](const Condition& c) { return c.origin == "earlier run"; }),
                      std::count_if(conditions.begin(), conditions.end(), [](const Condition& c) { return c.origin == "record"; }),
                      o.records_dir.empty() ? "" : " in " + o.records_dir, not_run.size(), not_run.empty() ? "" : " (listed at the end)", compared.size());
+    if (const auto chips_compared = std::count_if(conditions.begin(), conditions.end(),
+                                                  [](const Condition& c) { return !chip_type_agreement(c).empty(); }))
+      s << fmt::format("**Chip type**: the simulated chip is the observed one at {} of the {} chip-type conditions with "
+                       "a simulated type (validation.csv, column \"in range\").\n\n",
+                       std::count_if(conditions.begin(), conditions.end(),
+                                     [](const Condition& c) { return chip_type_agreement(c) == "yes"; }),
+                       chips_compared);
     s << "Resolution: " << resolution_text(o) << ".\n\n";
     if (!unresolved_bands.empty())
       s << fmt::format("**Shear bands not resolved at {} of {} compared conditions**: fewer than {:g} cells across "
@@ -622,7 +645,7 @@ void write_markdown(const ReportParts& r) {
         << "resolution in this directory: " << join(not_run, ", ")
         << ". `mpmcut validate --out " << out.string() << "` with a selection (--h, --speeds-m-per-min, --conditions) "
         << "runs them; complete ones are kept.\n\n";
-    if (data.builtin) s << builtin_data_notes();
+    if (data.builtin) s << builtin_data_notes(data.chips_builtin);
     if (!hot.empty())
       s << "## Physically odd\n\nMaximum particle temperature above the material's melting temperature in: "
         << join(hot, ", ") << ". Single particles at the tool–chip contact usually; see the chip pictures (mpmcut plot DIR).\n\n";
@@ -632,9 +655,12 @@ void write_markdown(const ReportParts& r) {
          "validation_speed.png, validation_thickness.png, validation_forces.png, validation_ratio.png (the plots: drawn once every "
          "selected run is complete, unless --no-plots or without Python's matplotlib), cases/*.toml (the "
          "run inputs), <condition>/ (result directories), logs/.\n\n"
-      << (data.builtin ? "Data: data/experiments/ti64_klippel2024_orthogonal_forces.csv and ti64_chip_morphology.csv "
-                         "(sources and caveats in their headers).\n"
-                       : "Data: " + o.measurements + " (--measurements).\n");
+      << (data.builtin ? std::string("Data: data/experiments/ti64_klippel2024_orthogonal_forces.csv") +
+                             (data.chips_builtin ? " and ti64_chip_morphology.csv" : "") +
+                             " (sources and caveats in their headers)"
+                       : "Data: " + o.measurements + " (--measurements)")
+      << (!data.chips_builtin ? "; chip types: " + o.chip_observations + " (--chip-observations)" : std::string())
+      << ".\n";
   });
 }
 

@@ -269,9 +269,10 @@ std::string condition_case_text(const CuttingCondition& c, const ConditionRunSet
   const double h = c.h_mm * 1e-3;
   const double r_n = c.edge_radius_um * 1e-6;
   const int cells_per_feed = c.kind == "chip" ? chip_cells_per_feed(o.cells_per_feed) : o.cells_per_feed;
-  // The edge-radius limit is for the measured edges of the force conditions; the chip-type conditions have
-  // the preset's 5 um edge (no radius in their source), which at r_n/M would be a 1 um cell at 75 m/s.
-  const double cells_per_edge_radius = c.kind == "forces" ? o.cells_per_edge_radius : 0.0;
+  // The edge-radius limit is for measured edges: the force conditions' and a chip-type condition's whose source gives
+  // one; the others have the preset's 5 um edge, which at r_n/M would be a 1 um cell at 75 m/s.
+  const bool measured_edge = c.kind == "forces" || c.edge_radius_given;
+  const double cells_per_edge_radius = measured_edge ? o.cells_per_edge_radius : 0.0;
   const double l_th = o.cells_per_thermal_length > 0.0
                           ? thermal_length_m(workpiece_thermal_diffusivity_m2_per_s(o), h, c.speed_m_per_s)
                           : 0.0;
@@ -290,17 +291,21 @@ std::string condition_case_text(const CuttingCondition& c, const ConditionRunSet
   s += fmt::format("material = \"{}\"  # {}\n", material, o.material_note);
   s += fmt::format("cutting_speed = {}\n", c.speed_m_per_s);
   s += fmt::format("uncut_chip_thickness = {}\n", h);
-  s += c.width_mm ? fmt::format("width_of_cut = 1e-3  # per mm: the measured forces are divided by the tests' width "
+  const char* angles_from = c.kind == "forces" ? "from the measurements" : "from the chip observations";
+  s += c.kind == "chip" ? "width_of_cut = 1e-3  # per mm of width: a chip-type condition compares no forces\n"
+       : c.width_mm     ? fmt::format("width_of_cut = 1e-3  # per mm: the measured forces are divided by the tests' width "
                                 "b = {:g} mm\n",
                                 *c.width_mm)
                   : "width_of_cut = 1e-3  # ASSUMPTION b = 1 mm: the width of cut is not in the Klippel data file\n";
   // Without the angles in the measurements, the text of the runs made before they could be given (records match).
-  s += c.rake_deg ? fmt::format("rake_angle_deg = {}  # from the measurements\n", *c.rake_deg)
+  s += c.rake_deg ? fmt::format("rake_angle_deg = {}  # {}\n", *c.rake_deg, angles_from)
                   : "rake_angle_deg = 0.0       # ASSUMPTION: not in the data file\n";
-  s += c.clearance_deg ? fmt::format("clearance_angle_deg = {}  # from the measurements\n", *c.clearance_deg)
+  s += c.clearance_deg ? fmt::format("clearance_angle_deg = {}  # {}\n", *c.clearance_deg, angles_from)
                        : "clearance_angle_deg = 11.0 # ASSUMPTION: not in the data file\n";
   s += fmt::format("edge_radius = {}  # {}\n", c.edge_radius_um * 1e-6,
-                   c.kind == "forces" ? "measured mean r_n of the tests" : "preset default: not stated in the source");
+                   c.kind == "forces"     ? "measured mean r_n of the tests"
+                   : c.edge_radius_given ? "from the chip observations"
+                                         : "preset default: not stated in the source");
   s += fmt::format("friction = {}  # {}\n", o.friction, o.friction_note);
   if (o.friction_heat_share)
     s += fmt::format("friction_heat_share = {}  # chosen with --friction-heat-share (the rest flows into the tool)\n",

@@ -66,6 +66,7 @@ struct CuttingCondition {
   double speed_m_per_s = 0;
   double h_mm = 0;
   double edge_radius_um = 0;  // measured r_n for force conditions; the preset's 5 um where the source gives none
+  bool edge_radius_given = false;  // a chip-type condition whose source gives r_n (a force condition's always does)
   std::optional<double> rake_deg, clearance_deg;  // from the measurements; none: the preset's (an assumption)
   std::optional<double> width_mm;  // the tests' width of cut, for the case's note (the run itself is 1 mm wide)
 };
@@ -107,6 +108,9 @@ struct ConditionRunSettings {
   // case text stays as it was before the option existed (committed run records still match).
   std::string contact_detection;
 };
+
+// The edge radius of a chip-type condition whose source gives none: the cutting preset's default, um.
+inline constexpr double kChipConditionEdgeRadius_um = 5.0;
 
 // Cells across t0 of chip-type conditions: at least the chip analysis' resolved count (below it
 // segments are particle roughness: at t0/5 the 5 and 75 m/s chip types came out swapped).

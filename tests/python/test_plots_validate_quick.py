@@ -22,6 +22,8 @@ Checks:
   from validation_runs.csv and the data file (errors, worst, slope of Fc over ln v, signs, goals met).
 - validation_runs.csv splits each force into the rake face's part and the edge and flank's (they add up to Fc and
   Ft; the edge and flank's thrust is positive).
+- --chip-observations: a user's chip-type file gives the chip conditions (h, angles and edge radius from its rows),
+  validation.csv says whether each simulated chip is the observed one; bad files exit 2 with file, line, column.
 - validation.csv has Fc/Ft/Ft/Fc/t_c rows with the measured means; chip-type rows; validation.md states b = 1 mm,
   the --quick caveat and its sources; the five plots are non-trivial PNGs.
 """
@@ -270,6 +272,67 @@ def check_measurements(binary, scratch):
     validate(binary, "--list", "--measurements", os.path.join(scratch, "none.csv"), "--out", mine + "_bad", expect=2)
 
 
+def check_chip_observations(binary, scratch):
+    """--chip-observations: a user's chip-type file (the built-in layout) gives the chip-type conditions beside the
+    forces of --measurements; a row's h, tool angles and edge radius reach its case file; a row without a speed is
+    not run; validation.csv says whether the simulated chip is the observed one; bad files exit 2 with file, line
+    and column."""
+    forces = os.path.join(scratch, "my_forces.csv")  # written by check_measurements
+    chips = os.path.join(scratch, "my_chips.csv")
+    with open(chips, "w") as f:
+        f.write("# my chip observations\n"
+                "id,chip_type,simulate_speed_m_per_s,h_min_mm,rake_deg,edge_radius_um,statement,source\n"
+                "steel_slow,continuous,2,0.08,10,20,long ribbons,my lab\n"
+                "steel_fast,serrated->discontinuous,40,0.08,,,saw-tooth then pieces,my lab\n"
+                "steel_hand,discontinuous,,0.2,,,hand-held test,my lab\n")
+    out = os.path.join(scratch, "chips")
+    ids = listed(validate(binary, "--list", "--measurements", forces, "--chip-observations", chips, "--out", out))
+    want = ["chip_steel_slow_v2mps", "chip_steel_fast_v40mps"]
+    if [i for i in ids if i.startswith("chip_")] != want or len(ids) != 6:
+        fail(f"--chip-observations --list: {ids}, expected the 4 force rows and {want}")
+    slow = os.path.join(out, "cases", want[0] + ".toml")
+    if abs(case_value(slow, "uncut_chip_thickness") - 0.08e-3) > 1e-12 or case_value(slow, "rake_angle_deg") != 10.0 \
+            or abs(case_value(slow, "edge_radius") - 20e-6) > 1e-12:
+        fail("the observation's h, rake and edge radius did not reach its case file")
+    with open(slow) as f:
+        if f.read().count("from the chip observations") != 2:
+            fail("the case file does not say where its edge radius and rake come from")
+    # Without a selection --quick runs every row of the user's files.
+    validate(binary, "--quick", "--no-plots", "--jobs", "2", "--measurements", forces, "--chip-observations", chips,
+             "--out", out)
+    rows = [r for r in read_csv(os.path.join(out, "validation.csv")) if r["quantity"] == "chip type"]
+    if [r["measured_mean"] for r in rows] != ["continuous", "serrated->discontinuous"]:
+        fail(f"validation.csv chip rows: {rows}")
+    for r in rows:
+        sim = r["simulated"]
+        expect = "" if sim not in ("continuous", "serrated", "discontinuous") else \
+            "yes" if sim == r["measured_mean"] or (r["measured_mean"] == "serrated->discontinuous" and sim != "continuous") \
+            else "no"
+        if r["in_measured_range"] != expect or "my lab" not in r["source"]:
+            fail(f"chip row {r}: agreement {r['in_measured_range']!r}, expected {expect!r}")
+    if "h = 0.08 mm" not in rows[0]["condition"] or "rake 10°" not in rows[0]["condition"]:
+        fail(f"the chip row does not name its condition: {rows[0]['condition']}")
+    with open(os.path.join(out, "validation.md")) as f:
+        md = f.read()
+    if "chip types: " + chips + " (--chip-observations)" not in md or "Sutter" in md:
+        fail("validation.md does not name the chip file, or still carries the built-in chip notes")
+    for text, words in (("a,round,2,0.1\n", ["my_bad_chips.csv:3", "chip_type", "round"]),
+                        ("a,serrated,2,\n", ["my_bad_chips.csv:3", "h_min_mm", "a value is needed"]),
+                        ("a,serrated,2,0.1\na,continuous,3,0.1\n", ["my_bad_chips.csv:4", "on line 3 already"]),
+                        ("a,serrated,-2,0.1\n", ["my_bad_chips.csv:3", "simulate_speed_m_per_s", "(0, 1000)"])):
+        bad_file = os.path.join(scratch, "my_bad_chips.csv")
+        with open(bad_file, "w") as f:
+            f.write("# mine\nid,chip_type,simulate_speed_m_per_s,h_min_mm\n" + text)
+        bad = validate(binary, "--list", "--chip-observations", bad_file, "--out", out + "_bad", expect=2)
+        if not all(w in bad.stderr for w in words):
+            fail(f"bad chip file: the error must name {words}: {bad.stderr}")
+    with open(bad_file, "w") as f:
+        f.write("id,chip_type,h_min_mm\na,serrated,0.1\n")
+    bad = validate(binary, "--list", "--chip-observations", bad_file, "--out", out + "_bad", expect=2)
+    if "missing column(s) 'simulate_speed_m_per_s'" not in bad.stderr:
+        fail(f"a chip file without its speed column: {bad.stderr}")
+
+
 def main(binary, scratch):
     shutil.rmtree(scratch, ignore_errors=True)
     os.makedirs(scratch)
@@ -365,6 +428,7 @@ def main(binary, scratch):
         fail(f"a key given twice: the error must name it and both values: {bad.stderr}")
 
     check_measurements(binary, scratch)
+    check_chip_observations(binary, scratch)
 
     # Resumption: part one, then the quick set (a superset) keeps part one.
     out = os.path.join(scratch, "validation")
