@@ -126,8 +126,8 @@ void classify_confidence(ChipAnalysis& a, const ChipThresholds& th) {
     // it is one piece (it was "clear" with every chip measure empty).
     a.classification_confidence = "marginal";
     a.classification_note = fmt::format(
-        "the chip is one piece, but its profile could not be measured ({} thickness samples): whether it is "
-        "serrated is not known; a longer cut gives the chip a profile",
+        "the chip is one piece, but its profile could not be measured ({} thickness samples): \"continuous\" here "
+        "says only that it is one piece, whether it is serrated is not known; a longer cut gives the chip a profile",
         a.profile.thickness_m.size());
     return;
   }

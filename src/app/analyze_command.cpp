@@ -10,6 +10,7 @@
 
 #include "analysis/chip_analysis.hpp"
 #include "run/run_case.hpp"
+#include "io/directory_lock.hpp"
 #include "io/input_error.hpp"
 #include "analysis/chip_over_time.hpp"
 #include "run/run_summary.hpp"
@@ -65,6 +66,14 @@ int analyze(const fs::path& dir, const std::string& snapshot) {
     loaded = load_cutting_result_scene(dir, "the chip analysis needs the cut's parameters");
   } catch (const InputError& e) {
     throw AnalyzeError(e.what());
+  }
+  // The analysis is merged into summary.json: not while a run writes into the directory (its last snapshot then is
+  // an early state, and the run's own summary would overwrite the merge or be overwritten by it).
+  DirectoryLock lock;
+  try {
+    lock = DirectoryLock::acquire(dir);
+  } catch (const std::runtime_error& e) {
+    throw AnalyzeError(fmt::format("{} (mpmcut analyze: run it once that run has finished or stopped)", e.what()));
   }
   const fs::path summary_file = dir / "summary.json";
   RunSummary summary = read_summary(summary_file);

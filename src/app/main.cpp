@@ -25,6 +25,7 @@
 #include "cutting/cutting_case.hpp"
 #include "run/case_loading.hpp"
 #include "run/run_summary.hpp"
+#include "run/start_warnings.hpp"
 
 namespace {
 
@@ -215,6 +216,7 @@ int main(int argc, char** argv) {
                              "{:.3g} steps\n",
                              case_file.empty() ? "built-in default case" : case_file, e.particles, e.grid_nodes,
                              format_bytes(e.bytes), format_bytes(available), e.steps);
+    if (c.cutting) std::cerr << cut_start_warning_lines(*c.cutting, c.scene);  // what the run would say at its start
     return kExitComplete;
   }
   if (out_dir.empty()) {

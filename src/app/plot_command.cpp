@@ -4,14 +4,18 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
 #include "io/input_error.hpp"
+#include "io/pvd_writer.hpp"
 #include "run/case_loading.hpp"
 #include "run/run_options.hpp"
 
@@ -83,6 +87,53 @@ int run_and_wait(const std::vector<std::string>& argv, bool quiet) {
   return 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
 }
 
+// --snapshots: "last", "all" or snapshot numbers N,M,... each of which the run wrote (particles.pvd lists them), and
+// the files of the snapshots to draw present. An InputError naming the first that is not: a number the run does not
+// have was a warning (and the last was drawn), a deleted snapshot file a Python traceback.
+void check_snapshot_choice(const std::filesystem::path& dir, const std::string& choice) {
+  namespace fs = std::filesystem;
+  std::vector<PvdSeries::Entry> entries;
+  try {
+    if (fs::exists(dir / "particles.pvd")) entries = PvdSeries::read(dir / "particles.pvd").entries();  // a copy
+  } catch (const std::exception& e) {
+    throw InputError(fmt::format("cannot read the run's particles.pvd: {}", e.what()));
+  }
+  if (entries.empty()) return;  // the plotter says that there is no snapshot to draw
+  const auto name_of = [](const PvdSeries::Entry& e) { return fs::path(e.file).filename().string(); };
+  std::vector<const PvdSeries::Entry*> drawn{&entries.back()};  // the last is always drawn
+  if (choice == "all") {
+    drawn.clear();
+    for (const PvdSeries::Entry& e : entries) drawn.push_back(&e);
+  } else if (choice != "last") {
+    std::size_t start = 0;
+    while (start <= choice.size()) {
+      const std::size_t comma = std::min(choice.find(',', start), choice.size());
+      const std::string item = choice.substr(start, comma - start);
+      long n = -1;
+      std::size_t used = 0;
+      try {
+        n = std::stol(item, &used);
+      } catch (const std::exception&) {
+      }
+      if (n < 0 || used != item.size() || item.empty())
+        throw InputError(fmt::format("--snapshots '{}': expected last, all, or snapshot numbers N,M,... (0, 1, ...); "
+                                     "got '{}'",
+                                     choice, item));
+      const std::string name = fmt::format("particles_{:06d}.vtu", n);
+      const auto it = std::find_if(entries.begin(), entries.end(), [&](const auto& e) { return name_of(e) == name; });
+      if (it == entries.end())
+        throw InputError(fmt::format("--snapshots {}: no such snapshot; this run has {} ({} to {})", n, entries.size(),
+                                     name_of(entries.front()), name_of(entries.back())));
+      drawn.push_back(&*it);
+      start = comma + 1;
+    }
+  }
+  for (const PvdSeries::Entry* e : drawn)
+    if (!fs::exists(dir / e->file))
+      throw InputError(fmt::format("the snapshot {} that particles.pvd lists is missing from '{}' (deleted or moved?)",
+                                   e->file, dir.string()));
+}
+
 }  // namespace
 
 std::string_view embedded_tool_file(std::string_view path) {
@@ -142,6 +193,7 @@ void add_plot_command(CLI::App& app) {
     try {
       (void)load_cutting_result_scene(options->result_dir, "the pictures are of a cut's chip, tool and forces; open "
                                                             "its particles.pvd in ParaView instead");
+      check_snapshot_choice(options->result_dir, options->snapshots);
     } catch (const InputError& e) {
       std::cerr << "error: " << e.what() << "\n";
       throw CLI::RuntimeError(kExitInputError);

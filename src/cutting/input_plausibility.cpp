@@ -1,6 +1,7 @@
 #include "cutting/input_plausibility.hpp"
 
 #include <cmath>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -17,13 +18,18 @@ double toughness_of(double fracture_energy, const MaterialParameters& m) {
   return std::sqrt(fracture_energy * m.youngs_modulus / (1.0 - m.poisson_ratio * m.poisson_ratio));
 }
 
+// `from_toughness`: the key may come from fracture_toughness (G_f does; the high-rate G_b has only its energy key).
 void check_fracture_energy(std::vector<std::string>& out, const MaterialParameters& m, const char* key, double g,
-                           const MetalPlausibility& b) {
+                           bool from_toughness, const MetalPlausibility& b) {
   if (g >= b.min_fracture_energy_J_m2) return;
-  out.push_back(fmt::format(
-      "{} = {:.3g} J/m^2 (the toughness K_IC = {:.3g} Pa sqrt(m) with this E and nu) is below {:g} J/m^2, less than "
-      "glass's (about 10); a metal's is 1e3-1e5 J/m^2: a fracture_toughness in MPa sqrt(m) instead of Pa sqrt(m)?",
-      material_key(m, key), g, toughness_of(g, m), b.min_fracture_energy_J_m2));
+  const std::string slip =
+      from_toughness ? fmt::format("(the toughness K_IC = {:.3g} Pa sqrt(m) with this E and nu) ", toughness_of(g, m))
+                     : std::string();
+  out.push_back(fmt::format("{} = {:.3g} J/m^2 {}is below {:g} J/m^2, less than glass's (about 10); a metal's is "
+                            "1e3-1e5 J/m^2: {}",
+                            material_key(m, key), g, slip, b.min_fracture_energy_J_m2,
+                            from_toughness ? "a fracture_toughness in MPa sqrt(m) instead of Pa sqrt(m)?"
+                                           : "an energy in kJ/m^2 instead of J/m^2?"));
 }
 
 void check_temperature(std::vector<std::string>& out, const std::string& key, double t, const MetalPlausibility& b) {
@@ -61,12 +67,18 @@ std::vector<std::string> input_plausibility_warnings(const CuttingParameters& c,
           "{:g}-{:g} (metals: 0.003-0.02): A and B in MPa instead of Pa, or E in another unit than A and B?",
           material_key(m, "jc_A"), m.jc_A + m.jc_B, ratio, m.youngs_modulus, b.min_flow_stress_over_E,
           b.max_flow_stress_over_E));
+    for (const auto& [key, term] : {std::pair{"jc_A", m.jc_A}, std::pair{"jc_B", m.jc_B}})
+      if (term > 0.0 && term < b.min_flow_stress_term_over_E * m.youngs_modulus && ratio >= b.min_flow_stress_over_E)
+        out.push_back(fmt::format("{} = {:.4g} Pa is {:.3g} of E = {:.4g} Pa, below {:g} (the softest metal sets: "
+                                  "2e-4): a value in MPa instead of Pa, beside the other term in Pa?",
+                                  material_key(m, key), term, term / m.youngs_modulus, m.youngs_modulus,
+                                  b.min_flow_stress_term_over_E));
     check_temperature(out, material_key(m, "room_temperature"), m.room_temperature, b);
   }
   if (m.damage_enabled) {
-    check_fracture_energy(out, m, "fracture_energy", m.fracture_energy, b);
+    check_fracture_energy(out, m, "fracture_energy", m.fracture_energy, true, b);
     if (m.fracture_transition_strain_rate > 0.0)
-      check_fracture_energy(out, m, "fracture_energy_brittle", m.fracture_energy_brittle, b);
+      check_fracture_energy(out, m, "fracture_energy_brittle", m.fracture_energy_brittle, false, b);
   }
   if (m.fracture_energy_brittle > 0.0 && !(m.damage_enabled && m.fracture_transition_strain_rate > 0.0))
     out.push_back(fmt::format("{} = {:g} J/m^2 has no effect: it is the high-rate fracture energy of a rate-dependent "

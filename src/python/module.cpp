@@ -5,7 +5,11 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
+
+#include <fmt/format.h>
 
 #include <pybind11/functional.h>
 #include <pybind11/pybind11.h>
@@ -61,13 +65,11 @@ class PyRun {
 
   // Up to n steps with the GIL released; returns whether the run can go on.
   bool step(long n) {
+    if (n < 0) throw py::value_error(fmt::format("Run.step(n): n must be 0 or more, got {}", n));
     views_.check_released();
     bool more = !ended_;
     for (long k = 0; k < n && more; ++k) {
-      {
-        py::gil_scoped_release release;
-        more = run_->advance();
-      }
+      more = advance("step");
       if (PyErr_CheckSignals() != 0) interrupted_by_python();
     }
     if (!more) ended_ = true;
@@ -76,14 +78,11 @@ class PyRun {
 
   // To the end; `callback(run)` after every `every` steps (a False return stops the run cleanly).
   std::string run(const std::optional<py::function>& callback, long every, py::handle self) {
+    if (every < 1) throw py::value_error(fmt::format("Run.run: every must be 1 or more steps, got {}", every));
     long since = 0;
     while (!ended_) {
       views_.check_released();
-      bool more;
-      {
-        py::gil_scoped_release release;
-        more = run_->advance();
-      }
+      const bool more = advance("run");
       if (!more) ended_ = true;
       if (PyErr_CheckSignals() != 0) interrupted_by_python();
       if (callback && !ended_ && ++since >= every) {
@@ -105,6 +104,7 @@ class PyRun {
 
   std::string finish() {
     if (!exit_code_) {
+      const Stepping busy(*this, "finish");
       py::gil_scoped_release release;
       ended_ = true;
       exit_code_ = run_->finish();
@@ -118,9 +118,16 @@ class PyRun {
   }
 
   void stop() { run_->stop_token().request_stop(); }
-  fs::path checkpoint() { return run_->write_checkpoint(); }
-  py::dict particles(py::handle self) { return views_.views(run_->simulation().particles(), self); }
+  fs::path checkpoint() {
+    refuse_while_stepping("checkpoint");
+    return run_->write_checkpoint();
+  }
+  py::dict particles(py::handle self) {
+    refuse_while_stepping("particles");
+    return views_.views(run_->simulation().particles(), self);
+  }
   py::dict csv(const char* name) {
+    refuse_while_stepping(name);
     run_->flush_outputs();
     return read_csv_columns(run_->root() / name);
   }
@@ -132,6 +139,30 @@ class PyRun {
   std::optional<int> exit_code() const { return exit_code_; }
 
  private:
+  // One thread steps a run at a time. A step runs with the GIL released so that other Python threads go on; a
+  // second thread stepping the same run meanwhile corrupted it (non-finite velocities within 8-400 steps, reported
+  // as a failed simulation), and a checkpoint, the particle views or the CSV flush mid-step read a half-made state.
+  // `stepping_` is read and set with the GIL held, so a plain flag is enough.
+  void refuse_while_stepping(std::string_view what) const {
+    if (stepping_)
+      throw std::runtime_error(fmt::format("Run.{}: this run is being stepped by another thread; call it from that "
+                                           "thread (e.g. in run()'s callback) or after the stepping returns",
+                                           what));
+  }
+  struct Stepping {
+    PyRun& r;
+    Stepping(PyRun& run, std::string_view what) : r(run) {
+      r.refuse_while_stepping(what);
+      r.stepping_ = true;
+    }
+    ~Stepping() { r.stepping_ = false; }  // destroyed after the GIL is taken back
+  };
+  bool advance(std::string_view what) {
+    const Stepping busy(*this, what);
+    py::gil_scoped_release release;
+    return run_->advance();
+  }
+
   // Ctrl-C in Python: stop cleanly (checkpoint, outputs, summary), then raise KeyboardInterrupt.
   void interrupted_by_python() {
     PyObject *type, *value, *trace;
@@ -146,8 +177,19 @@ class PyRun {
   std::unique_ptr<CaseRun> run_;
   ParticleViews views_;
   bool ended_ = false;
+  bool stepping_ = false;
   std::optional<int> exit_code_;
 };
+
+// The result directory's refusals name the command line's options; from Python they are Run's arguments.
+std::string in_python_terms(std::string text) {
+  for (const auto& [cli, python] : {std::pair<std::string_view, std::string_view>{"--force", "force=True"},
+                                    {"--out", "out"}}) {
+    for (std::size_t at = text.find(cli); at != std::string::npos; at = text.find(cli, at + python.size()))
+      text.replace(at, cli.size(), python);
+  }
+  return text;
+}
 
 }  // namespace
 
@@ -159,7 +201,7 @@ PYBIND11_MODULE(_mpmcut, m) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const RunOpenError& e) {
-      PyErr_SetString(PyExc_RuntimeError, e.what());
+      PyErr_SetString(PyExc_RuntimeError, in_python_terms(e.what()).c_str());
     }
   });
   ParticleViews::bind(m);

@@ -9,11 +9,9 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "cutting/cutting_resolution.hpp"
-#include "cutting/cutting_scene.hpp"
-#include "cutting/input_plausibility.hpp"
 #include "run/case_loading.hpp"
 #include "run/mass_scaling_report.hpp"
+#include "run/start_warnings.hpp"
 
 namespace mpmcut {
 
@@ -96,12 +94,7 @@ void CaseRun::begin() {
   progress_.emplace(sim_.scene().solver.end_time, std::cerr,
                     options_.progress ? std::nullopt : std::optional<bool>(false));
   std::cerr << console_line(mass_scaling_report(sim_, cutting_));
-  if (cutting_) {
-    std::cerr << console_lines(
-        cutting_resolution(*cutting_, workpiece_thermal_diffusivity_m2_per_s(*cutting_, sim_.scene())));
-    if (const std::string w = steady_window_warning(*cutting_); !w.empty()) std::cerr << "warning: " << w << "\n";
-    for (const std::string& w : input_plausibility_warnings(*cutting_, sim_.scene())) std::cerr << "warning: " << w << "\n";
-  }
+  if (cutting_) std::cerr << cut_start_warning_lines(*cutting_, sim_.scene());
 }
 
 bool CaseRun::advance() {

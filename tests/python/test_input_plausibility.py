@@ -3,7 +3,7 @@
 usage: /usr/bin/python3 test_input_plausibility.py MPMCUT_BINARY SCRATCH_DIR
 Checks: `mpmcut run` of a tiny cut with the density in g/cm^3 still completes, but the console names the key and
 the likely unit at the start, summary.json's `input_warnings` holds the same line, and a sweep's sweep.csv message
-carries it; the same cut with the density in kg/m^3 has an empty `input_warnings` and no such line.
+carries it, and so does `mpmcut run --check`; the same cut with the density in kg/m^3 has an empty `input_warnings` and no such line.
 """
 import csv
 import json
@@ -68,6 +68,11 @@ def main(binary, scratch):
     # At the start: before the first progress line.
     if console.index(warnings[0]) > console.find("progress:") >= 0:
         fail("the warning comes after the run started")
+
+    # run --check, the pre-flight, says the same without running.
+    p = subprocess.run([binary, "run", cases["g_per_cm3"], "--check"], capture_output=True, text=True, timeout=60)
+    if p.returncode != 0 or f"warning: {warnings[0]}" not in p.stderr or "valid;" not in p.stdout:
+        fail(f"run --check: exit {p.returncode}, does not carry the warning:\n{p.stdout}{p.stderr}")
 
     out = os.path.join(scratch, "sweep")
     p = subprocess.run([binary, "sweep", cases["g_per_cm3"], "--speeds", "20", "--jobs", "1", "--out", out,

@@ -96,6 +96,18 @@ def main(binary, scratch):
     p = subprocess.run([binary, "plot", os.path.join(scratch, "no_such_dir")], capture_output=True, text=True)
     if p.returncode == 0:
         fail("plot of a missing directory exited 0")
+    # A snapshot the run does not have is an error (it was a warning, and the last snapshot was drawn).
+    for bad, words in (("999", "no such snapshot"), ("-1", "expected last, all"), ("1,x", "got 'x'")):
+        p = subprocess.run([binary, "plot", case_dir, "--snapshots", bad], capture_output=True, text=True, timeout=60)
+        if p.returncode != 2 or words not in p.stderr:
+            fail(f"plot --snapshots {bad}: exit {p.returncode}, expected 2 naming '{words}': {p.stderr}")
+    # A snapshot file gone from the directory: an error naming it (it was a Python traceback).
+    gone = os.path.join(scratch, "snapshot_gone")
+    shutil.copytree(case_dir, gone)
+    os.remove(os.path.join(gone, "snapshots", last))
+    p = subprocess.run([binary, "plot", gone], capture_output=True, text=True, timeout=60)
+    if p.returncode != 2 or "is missing" not in p.stderr or last not in p.stderr or "Traceback" in p.stderr:
+        fail(f"plot with a deleted snapshot: exit {p.returncode}: {p.stderr}")
     # An earlier snapshot's chip analysis is printed, not merged into the summary of the final state.
     with open(os.path.join(case_dir, "summary.json")) as f:
         before = f.read()

@@ -118,8 +118,23 @@ def test_a_second_run_into_a_directory_in_use_is_refused_until_the_first_finishe
         mpmcut.Run(case, tmp_path / "r", force=True, threads=1)
     assert (tmp_path / "r" / "history.csv").exists()
     first.finish()
+    # Refusals name Run's arguments, not the command line's options.
+    with pytest.raises(RuntimeError, match=r"already exists; use force=True to overwrite") as refused:
+        mpmcut.Run(case, tmp_path / "r", threads=1)
+    assert "--force" not in str(refused.value)
     second = mpmcut.Run(case, tmp_path / "r", force=True, threads=1)  # free once the first has finished
     second.finish()
+
+
+def test_analyze_waits_for_the_run_writing_into_its_directory(tmp_path, binary, quick_case, short):
+    # analyze merged an early snapshot's chip into a live run's summary.json.
+    run = mpmcut.Run(mpmcut.load_case(quick_case, short), tmp_path / "r", threads=1)
+    run.step(5)
+    p = subprocess.run([binary, "analyze", str(tmp_path / "r")], capture_output=True, text=True)
+    assert p.returncode == 2 and "is in use" in p.stderr and "once that run has finished" in p.stderr, p.stderr
+    assert run.run() == "complete"
+    p = subprocess.run([binary, "analyze", str(tmp_path / "r")], capture_output=True, text=True)
+    assert p.returncode == 0, p.stderr
 
 
 @pytest.mark.parametrize("threads", [-1, 1025, 100000])
@@ -174,6 +189,33 @@ def test_the_gil_is_released_while_stepping(tmp_path, quick_case, short):
     # Held through the steps, the GIL would stop this loop for about the whole stepping time.
     assert run.step_count == 150 and longest < 0.5 * total, (longest, total)
     run.finish()
+
+
+def test_one_thread_steps_a_run_at_a_time(tmp_path, quick_case, short):
+    # Stepping one run from two threads corrupted it (non-finite velocities within 8-400 steps, "failed"): while one
+    # thread steps, another's step, checkpoint, particle views and CSVs are refused; the run itself is untouched.
+    import threading
+    run = mpmcut.Run(mpmcut.load_case(quick_case, short), tmp_path / "r", threads=1)
+    stepper = threading.Thread(target=run.step, args=(150,))
+    stepper.start()
+    refused = {}
+    while stepper.is_alive():
+        for name, call in (("step", lambda: run.step(1)), ("checkpoint", run.checkpoint),
+                           ("particles", lambda: run.particles), ("forces", run.forces)):
+            try:
+                call()
+            except RuntimeError as e:
+                assert "being stepped by another thread" in str(e), e
+                refused[name] = refused.get(name, 0) + 1
+    stepper.join()
+    assert set(refused) == {"step", "checkpoint", "particles", "forces"}, refused
+    assert run.step_count >= 150  # the refused calls did not step it; the others stepped between its steps
+    assert run.run() == "complete"
+    # Nonsense counts are refused, not ignored.
+    with pytest.raises(ValueError, match="n must be 0 or more"):
+        run.step(-5)
+    with pytest.raises(ValueError, match="every must be 1 or more"):
+        mpmcut.run_case(mpmcut.load_case(quick_case, short), tmp_path / "every", threads=1, every=0)
 
 
 @pytest.mark.parametrize("where", ["callback", "step"])

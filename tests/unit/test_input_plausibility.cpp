@@ -72,8 +72,25 @@ TEST(InputPlausibility, EachUnitSlipGivesItsOwnWarning) {
   expect_one_warning(input_plausibility_warnings(cut, m), {"fracture_energy = 3.28e-08", "K_IC = 65 Pa sqrt(m)",
                                                            "MPa sqrt(m)"});
   m = ti;
-  m.fracture_energy_brittle = 5.0e-9;
-  expect_one_warning(input_plausibility_warnings(cut, m), {"fracture_energy_brittle = 5e-09"});
+  m.fracture_energy_brittle = 0.5;  // kJ/m^2: G_b has no toughness key
+  expect_one_warning(input_plausibility_warnings(cut, m), {"fracture_energy_brittle = 0.5 J/m^2 is below",
+                                                           "kJ/m^2 instead of J/m^2"});
+  EXPECT_EQ(input_plausibility_warnings(cut, m)[0].find("K_IC"), std::string::npos);
+}
+
+// One term in MPa beside the other in Pa leaves A + B plausible (A = 1000 Pa with B = 331 MPa): each term alone is
+// checked too, and a set without A (OFHC copper-like A = 0) passes.
+TEST(InputPlausibility, OneFlowStressTermInMegapascalsIsFlagged) {
+  MaterialParameters m = library_set("ti64-johnson-1985");
+  m.jc_A = 1000.0;
+  expect_one_warning(input_plausibility_warnings(CuttingParameters{}, m), {"jc_A = 1000 Pa", "MPa instead of Pa"});
+  m = library_set("ti64-johnson-1985");
+  m.jc_B = 331.0;
+  expect_one_warning(input_plausibility_warnings(CuttingParameters{}, m), {"jc_B = 331 Pa"});
+  m = library_set("ti64-johnson-1985");
+  m.jc_B += m.jc_A;
+  m.jc_A = 0.0;
+  EXPECT_TRUE(input_plausibility_warnings(CuttingParameters{}, m).empty());
 }
 
 TEST(InputPlausibility, AModulusInGigapascalsIsNamedBesideTheFlowStressItDistorts) {
@@ -98,6 +115,15 @@ TEST(InputPlausibility, TemperaturesInCelsiusAreFlagged) {
   EXPECT_NE(w[0].find("room_temperature = 25 K"), std::string::npos) << w[0];
   EXPECT_NE(w[1].find("cutting.initial_temperature = 25 K"), std::string::npos) << w[1];
   EXPECT_NE(w[1].find("degrees Celsius"), std::string::npos) << w[1];
+  // Cryogenic machining (liquid nitrogen, 77 K) is no slip.
+  cut.initial_temperature = 77.0;
+  cut.tool_temperature = 77.0;
+  m = library_set("ti64-cutting");
+  EXPECT_TRUE(input_plausibility_warnings(cut, m).empty()) << input_plausibility_warnings(cut, m).front();
+  cut.tool_heat_transfer_coefficient = 1e5;
+  EXPECT_TRUE(input_plausibility_warnings(cut, m).empty());
+  cut.tool_heat_transfer_coefficient = 0.0;
+  cut.tool_temperature = 25.0;
   // The tool's temperature only where it acts: with a heat-transfer coefficient.
   cut.initial_temperature = 298.0;
   m = library_set("ti64-cutting");

@@ -61,6 +61,8 @@ def default_case(overrides=None):
 
 def run_case(case, out, callback=None, every=1, **options):
     """Runs `case` into `out` to its end and returns the finished Run (options as for Run)."""
+    if every < 1:  # before the result directory is made
+        raise ValueError(f"run_case: every must be 1 or more steps, got {every}")
     run = Run(case, os.fspath(out), **options)
     run.run(callback, every)
     return run
