@@ -33,11 +33,6 @@ const std::vector<std::string>& quick_condition_ids() {
   return ids;
 }
 
-double num(const std::map<std::string, std::string>& row, const std::string& key) {
-  const auto it = row.find(key);
-  return it == row.end() || it->second.empty() ? NAN : std::strtod(it->second.c_str(), nullptr);
-}
-
 // The material of the runs: a library set, or a set of --material-file (read and checked here, so that a broken
 // file stops the study before any run, with its file, line and key).
 void choose_material(const Options& o, ConditionRunSettings& s) {
@@ -94,10 +89,15 @@ DataFile read_user_file(const std::string& option, const std::string& path) {
 }  // namespace
 
 ForceData force_data(const Options& o) {
-  ForceData data = o.measurements.empty()
-                       ? ForceData{read_data_file(embedded_tool_file(kForcesFile), kForcesFile), kForcesSource, true}
-                       : ForceData{read_user_file("--measurements", o.measurements),
-                                   o.measurements + " (--measurements)", false};
+  ForceData data;
+  if (o.measurements.empty()) {
+    data.file = read_data_file(embedded_tool_file(kForcesFile), kForcesFile);
+    data.source = kForcesSource;
+  } else {
+    data.file = read_user_file("--measurements", o.measurements);
+    data.source = o.measurements + " (--measurements)";
+    data.builtin = false;
+  }
   if (!o.chip_observations.empty()) {
     data.chip_file = read_user_file("--chip-observations", o.chip_observations);
     data.chips_builtin = false;

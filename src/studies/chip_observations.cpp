@@ -1,6 +1,7 @@
 #include "studies/chip_observations.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -26,6 +27,9 @@ const std::vector<std::string>& required_chip_columns() {
 
 std::vector<ChipObservation> read_chip_observations(const DataFile& file) {
   file.require_columns(required_chip_columns());
+  if (file.rows.empty())
+    throw InputError(fmt::format("{}:{}: no data rows after the header line: no chip type to compare with", file.source,
+                                 file.header_line));
   std::vector<ChipObservation> out;
   std::map<std::string, int> line_of_id;
   for (const DataFile::Row& r : file.rows) {
@@ -37,7 +41,9 @@ std::vector<ChipObservation> read_chip_observations(const DataFile& file) {
     };
     o.id = o.cell("id");
     if (o.id.empty()) fail("id", "a name is needed in every row");
-    if (o.id.find_first_of("/\\ ") != std::string::npos) fail("id", fmt::format("\"{}\" names a directory: no '/', '\\' or spaces", o.id));
+    // It names the condition's result directory: chip_<id>_v<speed>mps.
+    if (!std::all_of(o.id.begin(), o.id.end(), [](unsigned char ch) { return std::isalnum(ch) || ch == '_' || ch == '-' || ch == '.'; }))
+      fail("id", fmt::format("\"{}\": letters, digits, '_', '-' and '.' only (it names the condition's directory)", o.id));
     if (const auto [it, added] = line_of_id.emplace(o.id, r.line); !added)
       fail("id", fmt::format("\"{}\" is on line {} already", o.id, it->second));
     o.chip_type = o.cell("chip_type");

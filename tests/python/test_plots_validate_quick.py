@@ -319,7 +319,9 @@ def check_chip_observations(binary, scratch):
     for text, words in (("a,round,2,0.1\n", ["my_bad_chips.csv:3", "chip_type", "round"]),
                         ("a,serrated,2,\n", ["my_bad_chips.csv:3", "h_min_mm", "a value is needed"]),
                         ("a,serrated,2,0.1\na,continuous,3,0.1\n", ["my_bad_chips.csv:4", "on line 3 already"]),
-                        ("a,serrated,-2,0.1\n", ["my_bad_chips.csv:3", "simulate_speed_m_per_s", "(0, 1000)"])):
+                        ("a,serrated,-2,0.1\n", ["my_bad_chips.csv:3", "simulate_speed_m_per_s", "(0, 1000)"]),
+                        ("my/chip,serrated,2,0.1\n", ["my_bad_chips.csv:3", "column 'id'", "names the condition's"]),
+                        ("", ["my_bad_chips.csv:2", "no data rows"])):
         bad_file = os.path.join(scratch, "my_bad_chips.csv")
         with open(bad_file, "w") as f:
             f.write("# mine\nid,chip_type,simulate_speed_m_per_s,h_min_mm\n" + text)
