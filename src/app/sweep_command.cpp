@@ -8,6 +8,7 @@
 #include <map>
 #include <sstream>
 #include <thread>
+#include <type_traits>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -138,7 +139,13 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
   const auto given_once = [](const auto& values, const char* option) {
     for (std::size_t i = 0; i < values.size(); ++i)
       for (std::size_t j = 0; j < i; ++j)
-        if (values[i] == values[j]) throw InputError(fmt::format("{} {}: the value is given twice", option, values[i]));
+        if (values[i] == values[j]) {
+          const auto shown = values[i];
+          if constexpr (std::is_floating_point_v<decltype(shown)>)
+            throw InputError(fmt::format("{} {:g}: the value is given twice", option, shown));
+          else
+            throw InputError(fmt::format("{} {}: the value is given twice", option, shown));
+        }
   };
   given_once(o.speeds_m_per_s, "--speeds");
   given_once(o.feeds_m, "--feeds");
@@ -149,7 +156,6 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
     check_value_reads(fmt::format("--feeds {:g}: the value", h), "cutting.uncut_chip_thickness", fmt::format("{}", h));
   std::vector<double> feeds_m = o.feeds_m;
   if (feeds_m.empty()) feeds_m = {own_feed_m};
-  fs::create_directories(out / "logs");
   const int jobs = o.jobs > 0 ? o.jobs : std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / o.threads);
 
   struct Case {
@@ -171,6 +177,14 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
       for (double v : o.speeds_m_per_s) {
         const std::string name = fmt::format("v{:g}mps_h{:g}mm", v, h * 1e3) + (n > 0 ? fmt::format("_n{}", n) : "") +
                                  varied_name(varied, value);
+        // Names carry 6 significant digits: two values closer than that would share one directory, and one
+        // case's results would replace the other's (--speeds 20,20.0000001 ran both into v20mps_h0.1mm).
+        for (const Case& earlier : cases)
+          if (earlier.dir == out / name)
+            throw InputError(fmt::format(
+                "two cases of the grid would share the directory {} (speeds {} and {} m/s, feeds {} and {} m): the case "
+                "names carry 6 significant digits; give values that differ within them",
+                name, earlier.speed, v, earlier.feed, h));
         cases.push_back({v, h, n, value, out / name});
         ChildRun run;
         run.name = name;
@@ -186,6 +200,7 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
         run.log_file = out / "logs" / (name + ".log");
         runs.push_back(run);
       }
+  fs::create_directories(out / "logs");
   std::cout << fmt::format("mpmcut sweep: {} cases ({} speeds x {} feeds x {} resolutions{}) from {}, {}, each with "
                            "--threads {} (change with --jobs/--threads); results in {} (complete cases of an earlier "
                            "sweep there are kept)\n",

@@ -230,7 +230,8 @@ void add_validate_command(CLI::App& app) {
       "shows the conditions and their cost); the report covers every complete condition in --out");
   v->add_flag("--quick", o->quick,
               "Coarse and short runs (seconds) of 5 conditions (h 0.04 mm at 100 and 400.1 m/min, 0.1 mm at 100 m/min, "
-              "the two chip-type conditions) unless a selection is given: checks the pipeline, numbers not converged");
+              "the two built-in chip-type conditions; every row of a --measurements or --chip-observations file) "
+              "unless a selection is given: checks the pipeline, numbers not converged");
   v->add_option("--cells-per-feed", o->cells_per_feed,
                 "N: cell <= t0/N, cells across the uncut chip thickness (default 10; cost grows as N^3); chip-type "
                 "conditions use at least 8")

@@ -195,6 +195,13 @@ bool same_speed(double a, double b) { return std::abs(a - b) <= 1e-6 * std::max(
 // Marks the conditions this invocation runs. Filters given together must all match (--h 0.1 --speeds-m-per-min
 // 100 is one condition); a filter value that matches nothing in the matrix is an error, so that a typing error
 // does not silently run less.
+// A speed given on the command line: within round-off of the condition's, or as --list and the report print it (6
+// significant digits: a chip observation's 5.123456789 m/s shows as 307.407 m/min, 1.3e-6 away).
+bool speed_selected(const Condition& c, double v_m_per_min) {
+  return same_speed(c.speed_m_per_min(), v_m_per_min) ||
+         fmt::format("{:g}", c.speed_m_per_min()) == fmt::format("{:g}", v_m_per_min);
+}
+
 void select_conditions(std::vector<Condition>& all, const Options& o) {
   const bool filtered = !o.h_mm.empty() || !o.speeds_m_per_min.empty() || !o.condition_ids.empty();
   const auto available = [&](auto value_of) {
@@ -209,7 +216,7 @@ void select_conditions(std::vector<Condition>& all, const Options& o) {
       throw InputError(fmt::format("--h {:g}: no condition of the matrix has h = {:g} mm (it has h = {} mm)", h, h,
                                    available([](const Condition& c) { return fmt::format("{:g}", c.h_mm); })));
   for (double v : o.speeds_m_per_min)
-    if (std::none_of(all.begin(), all.end(), [&](const Condition& c) { return same_speed(c.speed_m_per_min(), v); }))
+    if (std::none_of(all.begin(), all.end(), [&](const Condition& c) { return speed_selected(c, v); }))
       throw InputError(fmt::format("--speeds-m-per-min {:g}: no condition of the matrix has vc = {:g} m/min (it has {} "
                                    "m/min)",
                                    v, v, available([](const Condition& c) { return fmt::format("{:g}", c.speed_m_per_min()); })));
@@ -227,7 +234,7 @@ void select_conditions(std::vector<Condition>& all, const Options& o) {
     c.selected =
         (o.h_mm.empty() || std::any_of(o.h_mm.begin(), o.h_mm.end(), [&](double h) { return same_h(c.h_mm, h); })) &&
         (o.speeds_m_per_min.empty() || std::any_of(o.speeds_m_per_min.begin(), o.speeds_m_per_min.end(),
-                                                   [&](double v) { return same_speed(c.speed_m_per_min(), v); })) &&
+                                                   [&](double v) { return speed_selected(c, v); })) &&
         (o.condition_ids.empty() || std::find(o.condition_ids.begin(), o.condition_ids.end(), c.id) != o.condition_ids.end());
   }
   if (std::none_of(all.begin(), all.end(), [](const Condition& c) { return c.selected; }))

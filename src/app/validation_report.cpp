@@ -306,8 +306,9 @@ Comparison compare(const std::vector<Condition>& conditions, const ForceData& da
     const std::string tool = tool_text(c);
     const std::string note = seen.cell("note");
     const std::string tag = seen.cell("tag");
-    table.rows.push_back({fmt::format("h = {:g} mm, V = {:g} m/s ({:g} m/min), {}", c.h_mm, c.speed_m_per_s,
-                                      c.speed_m_per_min(), tool.empty() ? "rake 0° (assumed)" : tool),
+    table.rows.push_back({fmt::format("h = {:g} mm, V = {:g} m/s ({:g} m/min), {}, r_n {:g} µm{}", c.h_mm,
+                                      c.speed_m_per_s, c.speed_m_per_min(), tool.empty() ? "rake 0° (assumed)" : tool,
+                                      c.edge_radius_um, c.edge_radius_given ? "" : " (assumed)"),
                           "chip type", "-", seen.chip_type, "", "", sim, "", chip_type_agreement(c),
                           seen.cell("statement") + (note.empty() ? "" : " (" + note + ")"),
                           seen.cell("source") + (tag.empty() ? "" : " [" + tag + "]")});
@@ -511,9 +512,12 @@ std::string assumptions_section(const ReportParts& r) {
        "cuts), the mean raw force over the last half of the cut (column force_window of validation_runs.csv). "
        "Columns Fc_ and Ft_drift_in_window_percent there give the second half's mean minus the first half's, in % "
        "of the mean: beyond ±10 % the cut had not reached a steady state.\n"
-    << (data.builtin ? "- The measured speeds (≤ 6.4 m/s) are below the ultra-high-speed range of the target paper; "
-                       "chip-type data at 5–75 m/s exist only as abstract statements without the transition speed.\n"
-                     : "")
+    << (data.builtin ? std::string("- The measured speeds (≤ 6.4 m/s) are below the ultra-high-speed range of the target "
+                                   "paper") +
+                           (data.chips_builtin ? "; chip-type data at 5–75 m/s exist only as abstract statements "
+                                                 "without the transition speed.\n"
+                                               : ".\n")
+                     : std::string())
     << "\n";
   return s.str();
 }

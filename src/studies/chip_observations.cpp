@@ -25,8 +25,17 @@ const std::vector<std::string>& required_chip_columns() {
   return columns;
 }
 
+const std::vector<std::string>& optional_chip_columns() {
+  static const std::vector<std::string> columns{"rake_deg", "clearance_deg", "edge_radius_um", "statement", "source",
+                                                "tag", "note", "speed_min_m_per_s", "speed_max_m_per_s", "h_max_mm"};
+  return columns;
+}
+
 std::vector<ChipObservation> read_chip_observations(const DataFile& file) {
   file.require_columns(required_chip_columns());
+  std::vector<std::string> known = required_chip_columns();
+  known.insert(known.end(), optional_chip_columns().begin(), optional_chip_columns().end());
+  file.refuse_misspelt_columns(known);  // edge_radus_um ran with the preset's 5 um edge
   if (file.rows.empty())
     throw InputError(fmt::format("{}:{}: no data rows after the header line: no chip type to compare with", file.source,
                                  file.header_line));
@@ -68,6 +77,8 @@ std::vector<ChipObservation> read_chip_observations(const DataFile& file) {
       fail("edge_radius_um", fmt::format("must be below 10 h_min_mm = {:g} um, got {:g}", 1e4 * *h, *o.edge_radius_um));
     out.push_back(o);
   }
+  if (std::none_of(out.begin(), out.end(), [](const ChipObservation& o) { return o.simulate_speed_m_per_s.has_value(); }))
+    throw InputError(fmt::format("{}: no row gives simulate_speed_m_per_s: nothing to simulate and compare", file.source));
   return out;
 }
 

@@ -25,12 +25,13 @@ struct ChipObservation {
 // The chip types an observation may name (the chip analysis gives the first three).
 const std::vector<std::string>& chip_types();
 
-// The columns an observation file must have; the others (rake_deg, clearance_deg, edge_radius_um, source, tag,
-// statement, note, speed and h ranges) are optional.
+// The columns an observation file must have, and the optional ones (rake_deg, clearance_deg, edge_radius_um, source,
+// tag, statement, note, the speed and h ranges of the source); a column that misspells one of them is an error.
 const std::vector<std::string>& required_chip_columns();
+const std::vector<std::string>& optional_chip_columns();
 
-// Every row, checked: InputError with file, line and column for a missing column, an unknown chip type, a
-// number out of range, a simulated row without h, or an id given twice.
+// Every row, checked: InputError with file, line and column for a missing or misspelt column, an unknown chip type,
+// a number out of range, a simulated row without h, an id given twice, or a file without a row to simulate.
 std::vector<ChipObservation> read_chip_observations(const DataFile& file);
 
 }  // namespace mpmcut

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
+#include <tuple>
 
 #include <fmt/format.h>
 
@@ -97,6 +98,16 @@ double DataFile::number(const Row& row, const std::string& column) const {
   return x;
 }
 
+void DataFile::refuse_misspelt_columns(const std::vector<std::string>& known) const {
+  for (const std::string& column : columns) {
+    if (std::find(known.begin(), known.end(), column) != known.end()) continue;
+    for (const std::string& name : known)
+      if (levenshtein(column, name) <= (name.size() >= 8 ? 2u : 1u))  // "notes" is no misspelt "tests"
+        throw InputError(fmt::format("{}:{}: column '{}' is not one this file format knows: did you mean '{}'?", source,
+                                     header_line, column, name));
+  }
+}
+
 const std::vector<std::string>& required_force_columns() {
   static const std::vector<std::string> columns{"h_mm", "vc_m_per_min", "Fc_mean_N", "Ff_mean_N", "edge_radius_um"};
   return columns;
@@ -115,19 +126,9 @@ std::vector<MeasuredForces> read_measured_forces(const DataFile& file) {
   if (file.rows.empty())
     throw InputError(fmt::format("{}:{}: no data rows after the header line: nothing to compare with", file.source,
                                  file.header_line));
-  // A misspelt optional column (widht_mm) would be ignored silently and change the comparison (b = 1 mm assumed):
-  // a column close to a known one is an error; other extra columns (notes) are left alone.
-  for (const std::string& column : file.columns) {
-    const auto known = [&](const std::vector<std::string>& names) {
-      return std::find(names.begin(), names.end(), column) != names.end();
-    };
-    if (known(required_force_columns()) || known(optional_force_columns())) continue;
-    for (const auto* names : {&required_force_columns(), &optional_force_columns()})
-      for (const std::string& name : *names)
-        if (levenshtein(column, name) <= (name.size() >= 8 ? 2u : 1u))  // "notes" is no misspelt "tests"
-          throw InputError(fmt::format("{}:{}: column '{}' is not one this file format knows: did you mean '{}'?",
-                                       file.source, file.header_line, column, name));
-  }
+  std::vector<std::string> known = required_force_columns();
+  known.insert(known.end(), optional_force_columns().begin(), optional_force_columns().end());
+  file.refuse_misspelt_columns(known);
   std::vector<MeasuredForces> out;
   for (const DataFile::Row& r : file.rows) {
     MeasuredForces m;
@@ -151,6 +152,14 @@ std::vector<MeasuredForces> read_measured_forces(const DataFile& file) {
     m.fc_max_N = or_mean("Fc_max_N", m.fc_N);
     m.ff_min_N = or_mean("Ff_min_N", m.ff_N);
     m.ff_max_N = or_mean("Ff_max_N", m.ff_N);
+    // The range of the tests holds their mean: an inverted or misplaced one made "in range" and the ratio's range
+    // meaningless.
+    for (const auto& [force, mean, lo, hi] : {std::tuple{"Fc", m.fc_N, m.fc_min_N, m.fc_max_N},
+                                              std::tuple{"Ff", m.ff_N, m.ff_min_N, m.ff_max_N}})
+      if (!(lo <= mean && mean <= hi))
+        throw InputError(fmt::format("{}:{}: columns '{}_min_N', '{}_mean_N', '{}_max_N': the mean {:g} N must lie in "
+                                     "[min, max] = [{:g}, {:g}] N",
+                                     file.source, r.line, force, force, force, mean, lo, hi));
     const double n = file.number(r, "n_tests");
     m.n_tests = std::isfinite(n) ? static_cast<int>(n) : 1;
     if (const double t = file.number(r, "chip_thickness_um"); std::isfinite(t) && t > 0) m.chip_thickness_um = t;

@@ -28,6 +28,9 @@ struct DataFile {
   void require_columns(const std::vector<std::string>& names) const;
   // The cell as a number: NaN if blank; InputError naming file, line and column if it is not a number.
   double number(const Row& row, const std::string& column) const;
+  // A misspelt optional column (widht_mm) would be ignored silently and change the comparison: a column within an
+  // edit or two of a `known` one is an InputError naming it; other extra columns (notes) are left alone.
+  void refuse_misspelt_columns(const std::vector<std::string>& known) const;
 };
 
 DataFile read_data_file(std::string_view text, const std::string& source);

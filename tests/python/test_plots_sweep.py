@@ -169,7 +169,10 @@ def check_vary(binary, case, scratch):
                         (["--speeds", "-1"], ["--speeds", "-1", "positive"]),
                         (["--speeds", "20", "--feeds", "0"], ["--feeds", "0", "positive"]),
                         (["--speeds", "20", "--feeds", "0.2"], ["--feeds 0.2", "(0, 0.1) m"]),
-                        (["--speeds", "20", "--cells-per-feed", "4,8,8"], ["--cells-per-feed 8", "given twice"])):
+                        (["--speeds", "20", "--cells-per-feed", "4,8,8"], ["--cells-per-feed 8", "given twice"]),
+                        (["--speeds", "20", "--feeds", "0.1e-3,0.1e-3"], ["--feeds 0.0001:", "given twice"]),
+                        # Values that differ beyond the names' 6 digits ran into one directory, one result lost.
+                        (["--speeds", "20,20.0000001"], ["share the directory v20mps_h0.1mm", "6 significant"])):
         p = subprocess.run([binary, "sweep", case, "--out", out + "_bad", *args], capture_output=True, text=True,
                            timeout=60)
         if p.returncode != 2 or not all(w in p.stderr for w in words) or os.path.exists(out + "_bad"):

@@ -259,13 +259,15 @@ def check_measurements(binary, scratch):
         fail(f"validation.csv with --measurements: {rows}")
     for text, words in (("0.05,120,110,60\n", ["my_bad.csv:1", "missing column(s) 'edge_radius_um'"]),
                         ("0.05,120,110,60,20,50\n", ["my_bad.csv:3", "rake_deg", "(-45, 45)"]),
-                        ("0.05,120,110,60,20,5\n0.05,120,111,61,20,5\n", ["my_bad.csv:4", "on line 3 already"])):
+                        ("0.05,120,110,60,20,5\n0.05,120,111,61,20,5\n", ["my_bad.csv:4", "on line 3 already"]),
+                        ("0.05,120,110,60,20,5,120,100\n", ["my_bad.csv:3", "Fc_mean_N", "must lie in [min, max] = [120, 100]"])):
         bad_file = os.path.join(scratch, "my_bad.csv")
         with open(bad_file, "w") as f:
             if "missing" in words[1]:
                 f.write("h_mm,vc_m_per_min,Fc_mean_N,Ff_mean_N\n" + text)
             else:
-                f.write("# mine\nh_mm,vc_m_per_min,Fc_mean_N,Ff_mean_N,edge_radius_um,rake_deg\n" + text)
+                f.write("# mine\nh_mm,vc_m_per_min,Fc_mean_N,Ff_mean_N,edge_radius_um,rake_deg"
+                        + (",Fc_min_N,Fc_max_N" if text.count(",") == 7 else "") + "\n" + text)
         bad = validate(binary, "--list", "--measurements", bad_file, "--out", mine + "_bad", expect=2)
         if not all(w in bad.stderr for w in words):
             fail(f"bad measurement file: the error must name {words}: {bad.stderr}")
@@ -328,6 +330,24 @@ def check_chip_observations(binary, scratch):
         bad = validate(binary, "--list", "--chip-observations", bad_file, "--out", out + "_bad", expect=2)
         if not all(w in bad.stderr for w in words):
             fail(f"bad chip file: the error must name {words}: {bad.stderr}")
+    # A misspelt optional column (edge_radus_um ran with the preset's 5 um edge) and a file with nothing to simulate.
+    for text, words in (("id,chip_type,simulate_speed_m_per_s,h_min_mm,edge_radus_um\na,serrated,2,0.1,20\n",
+                         ["my_bad_chips.csv:1", "'edge_radus_um'", "did you mean 'edge_radius_um'"]),
+                        ("id,chip_type,simulate_speed_m_per_s,h_min_mm\na,serrated,,0.1\n",
+                         ["no row gives simulate_speed_m_per_s"])):
+        with open(bad_file, "w") as f:
+            f.write(text)
+        bad = validate(binary, "--list", "--chip-observations", bad_file, "--out", out + "_bad", expect=2)
+        if not all(w in bad.stderr for w in words):
+            fail(f"bad chip file: the error must name {words}: {bad.stderr}")
+    # A speed as --list prints it (6 digits) selects its condition.
+    odd = os.path.join(scratch, "odd_speed.csv")
+    with open(odd, "w") as f:
+        f.write("id,chip_type,simulate_speed_m_per_s,h_min_mm\nodd,serrated,5.123456789,0.1\n")
+    ids = listed(validate(binary, "--list", "--chip-observations", odd, "--speeds-m-per-min", "307.407", "--out",
+                          out + "_odd"))
+    if "chip_odd_v5.12346mps" not in ids:
+        fail(f"--speeds-m-per-min 307.407 does not select the 5.123456789 m/s condition: {ids}")
     with open(bad_file, "w") as f:
         f.write("id,chip_type,h_min_mm\na,serrated,0.1\n")
     bad = validate(binary, "--list", "--chip-observations", bad_file, "--out", out + "_bad", expect=2)
