@@ -13,6 +13,7 @@
 #include "io/directory_lock.hpp"
 #include "io/input_error.hpp"
 #include "analysis/chip_over_time.hpp"
+#include "run/run_outputs.hpp"
 #include "run/run_summary.hpp"
 #include "io/pvd_writer.hpp"
 #include "run/case_loading.hpp"
@@ -44,20 +45,13 @@ std::vector<PvdSeries::Entry> snapshots_of(const fs::path& dir) {
 // `choice` is "last" or the snapshot number N of snapshots/particles_N.vtu (0 = first).
 PvdSeries::Entry pick_snapshot(const std::vector<PvdSeries::Entry>& entries, const std::string& choice) {
   if (choice == "last") return entries.back();
-  long n = -1;
-  try {
-    std::size_t used = 0;
-    n = std::stol(choice, &used);
-    if (used != choice.size()) n = -1;
-  } catch (const std::exception&) {
-    n = -1;
-  }
+  const long n = snapshot_number(choice);
   if (n < 0) throw AnalyzeError(fmt::format("--snapshot '{}': expected a snapshot number (0, 1, ...) or 'last'", choice));
-  const std::string name = fmt::format("particles_{:06d}.vtu", n);
   for (const PvdSeries::Entry& e : entries)
-    if (fs::path(e.file).filename() == name) return e;
-  throw AnalyzeError(fmt::format("--snapshot {}: no such snapshot; this run has {} (particles_{:06d}.vtu to {})", n,
-                                 entries.size(), 0, fs::path(entries.back().file).filename().string()));
+    if (snapshot_index(fs::path(e.file).filename().string()) == n) return e;
+  throw AnalyzeError(fmt::format("--snapshot {}: no such snapshot; this run has {} ({} to {})", n, entries.size(),
+                                 fs::path(entries.front().file).filename().string(),
+                                 fs::path(entries.back().file).filename().string()));
 }
 
 int analyze(const fs::path& dir, const std::string& snapshot) {

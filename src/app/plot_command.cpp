@@ -17,6 +17,7 @@
 #include "io/input_error.hpp"
 #include "io/pvd_writer.hpp"
 #include "run/case_loading.hpp"
+#include "run/run_outputs.hpp"
 #include "run/run_options.hpp"
 
 namespace mpmcut {
@@ -109,18 +110,13 @@ void check_snapshot_choice(const std::filesystem::path& dir, const std::string& 
     while (start <= choice.size()) {
       const std::size_t comma = std::min(choice.find(',', start), choice.size());
       const std::string item = choice.substr(start, comma - start);
-      long n = -1;
-      std::size_t used = 0;
-      try {
-        n = std::stol(item, &used);
-      } catch (const std::exception&) {
-      }
-      if (n < 0 || used != item.size() || item.empty())
+      const long n = snapshot_number(item);
+      if (n < 0)
         throw InputError(fmt::format("--snapshots '{}': expected last, all, or snapshot numbers N,M,... (0, 1, ...); "
                                      "got '{}'",
                                      choice, item));
-      const std::string name = fmt::format("particles_{:06d}.vtu", n);
-      const auto it = std::find_if(entries.begin(), entries.end(), [&](const auto& e) { return name_of(e) == name; });
+      const auto it =
+          std::find_if(entries.begin(), entries.end(), [&](const auto& e) { return snapshot_index(name_of(e)) == n; });
       if (it == entries.end())
         throw InputError(fmt::format("--snapshots {}: no such snapshot; this run has {} ({} to {})", n, entries.size(),
                                      name_of(entries.front()), name_of(entries.back())));

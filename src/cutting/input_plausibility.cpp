@@ -9,7 +9,7 @@ namespace mpmcut {
 
 namespace {
 
-// "material 'ti64': " before a material key, "cutting." before a key of the cut.
+// A material key as the warnings name it: "material 'ti64': density".
 std::string material_key(const MaterialParameters& m, const char* key) { return fmt::format("material '{}': {}", m.name, key); }
 
 // The toughness K_IC = sqrt(G E / (1 - nu^2)) that gives this fracture energy: handbooks quote K_IC, so a slip

@@ -50,13 +50,16 @@ std::vector<std::string> history_columns() {
 
 std::string snapshot_name(int index) { return fmt::format("snapshots/particles_{:06d}.vtu", index); }
 
+long snapshot_number(const std::string& text) {
+  if (text.empty() || text.size() > 9 || !std::all_of(text.begin(), text.end(), ::isdigit)) return -1;
+  return std::stol(text);
+}
+
 // Number of a snapshot file name "particles_NNNNNN.vtu", or -1.
 long snapshot_index(const std::string& file_name) {
   constexpr std::string_view prefix = "particles_", suffix = ".vtu";
   if (!file_name.starts_with(prefix) || !file_name.ends_with(suffix)) return -1;
-  const std::string digits = file_name.substr(prefix.size(), file_name.size() - prefix.size() - suffix.size());
-  if (digits.empty() || digits.size() > 9 || !std::all_of(digits.begin(), digits.end(), ::isdigit)) return -1;
-  return std::stol(digits);
+  return snapshot_number(file_name.substr(prefix.size(), file_name.size() - prefix.size() - suffix.size()));
 }
 
 RunOutputs::RunOutputs(const fs::path& root, Simulation& sim, const std::optional<CuttingParameters>& cutting,

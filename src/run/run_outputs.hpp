@@ -23,6 +23,7 @@ class Simulation;
 std::vector<std::string> history_columns();
 std::string snapshot_name(int index);        // "snapshots/particles_NNNNNN.vtu"
 long snapshot_index(const std::string& file_name);  // NNNNNN of "particles_NNNNNN.vtu", or -1
+long snapshot_number(const std::string& text);      // a user's snapshot number "12" (>= 0), or -1
 
 class RunOutputs {
  public:
