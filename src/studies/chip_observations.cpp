@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cmath>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "io/input_error.hpp"
 
@@ -57,22 +57,14 @@ std::vector<ChipObservation> read_chip_observations(const DataFile& file) {
       fail("id", fmt::format("\"{}\" is on line {} already", o.id, it->second));
     o.chip_type = o.cell("chip_type");
     if (std::find(chip_types().begin(), chip_types().end(), o.chip_type) == chip_types().end())
-      fail("chip_type", fmt::format("must be one of continuous, serrated, discontinuous, serrated->discontinuous; got \"{}\"",
-                                    o.chip_type));
-    const auto number_in = [&](const char* column, double lo, double hi, bool lo_open, const char* unit) {
-      const double x = file.number(r, column);
-      if (std::isnan(x) && o.cell(column).empty()) return std::optional<double>();
-      if (!(std::isfinite(x) && (lo_open ? x > lo : x >= lo) && x < hi))
-        fail(column, fmt::format("must be in {}{:g}, {:g}) {}, got {}", lo_open ? '(' : '[', lo, hi, unit, o.cell(column)));
-      return std::optional<double>(x);
-    };
-    o.simulate_speed_m_per_s = number_in("simulate_speed_m_per_s", 0.0, 1000.0, true, "m/s");
-    const std::optional<double> h = number_in("h_min_mm", 0.0, 100.0, true, "mm");
+      fail("chip_type", fmt::format("must be one of {}; got \"{}\"", fmt::join(chip_types(), ", "), o.chip_type));
+    o.simulate_speed_m_per_s = file.number_in(r, "simulate_speed_m_per_s", Range::open(0.0, 1000.0, "m/s"));
+    const std::optional<double> h = file.number_in(r, "h_min_mm", Range::open(0.0, 100.0, "mm"));
     if (o.simulate_speed_m_per_s && !h) fail("h_min_mm", "a value is needed where simulate_speed_m_per_s is given");
     o.h_mm = h.value_or(0.0);
-    o.rake_deg = number_in("rake_deg", -45.0, 45.0, true, "degrees");
-    o.clearance_deg = number_in("clearance_deg", 0.0, 45.0, true, "degrees");
-    o.edge_radius_um = number_in("edge_radius_um", 0.0, 1000.0, false, "um");
+    o.rake_deg = file.number_in(r, "rake_deg", kRakeColumn);
+    o.clearance_deg = file.number_in(r, "clearance_deg", kClearanceColumn);
+    o.edge_radius_um = file.number_in(r, "edge_radius_um", Range::closed_open(0.0, 1000.0, "um"));
     if (o.edge_radius_um && h && !(*o.edge_radius_um < 10.0 * 1e3 * *h))  // the cutting preset's limit
       fail("edge_radius_um", fmt::format("must be below 10 h_min_mm = {:g} um, got {:g}", 1e4 * *h, *o.edge_radius_um));
     out.push_back(o);

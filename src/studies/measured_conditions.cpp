@@ -98,6 +98,18 @@ double DataFile::number(const Row& row, const std::string& column) const {
   return x;
 }
 
+std::optional<double> DataFile::number_in(const Row& row, const std::string& column, const Range& range) const {
+  const double x = number(row, column);
+  if (std::isnan(x)) {
+    const auto it = row.cells.find(column);
+    if (it == row.cells.end() || it->second.empty()) return std::nullopt;
+  }
+  if (!range.contains(x))  // NaN too
+    throw InputError(fmt::format("{}:{}: column '{}': must be {}, got {}", source, row.line, column, range.text(),
+                                 row.cells.at(column)));
+  return x;
+}
+
 void DataFile::refuse_misspelt_columns(const std::vector<std::string>& known) const {
   for (const std::string& column : columns) {
     if (std::find(known.begin(), known.end(), column) != known.end()) continue;
@@ -163,23 +175,9 @@ std::vector<MeasuredForces> read_measured_forces(const DataFile& file) {
     const double n = file.number(r, "n_tests");
     m.n_tests = std::isfinite(n) ? static_cast<int>(n) : 1;
     if (const double t = file.number(r, "chip_thickness_um"); std::isfinite(t) && t > 0) m.chip_thickness_um = t;
-    if (const double a = file.number(r, "rake_deg"); std::isfinite(a)) {
-      if (!(a > -45.0 && a < 45.0))
-        throw InputError(fmt::format("{}:{}: column 'rake_deg': must be in (-45, 45) degrees, got {}", file.source,
-                                     r.line, a));
-      m.rake_deg = a;
-    }
-    if (const double a = file.number(r, "clearance_deg"); std::isfinite(a)) {
-      if (!(a > 0.0 && a < 45.0))
-        throw InputError(fmt::format("{}:{}: column 'clearance_deg': must be in (0, 45) degrees, got {}", file.source,
-                                     r.line, a));
-      m.clearance_deg = a;
-    }
-    if (const double b = file.number(r, "width_mm"); std::isfinite(b)) {
-      if (!(b > 0.0 && b <= 1000.0))
-        throw InputError(fmt::format("{}:{}: column 'width_mm': must be in (0, 1000] mm, got {}", file.source, r.line, b));
-      m.width_mm = b;
-    }
+    m.rake_deg = file.number_in(r, "rake_deg", kRakeColumn);
+    m.clearance_deg = file.number_in(r, "clearance_deg", kClearanceColumn);
+    m.width_mm = file.number_in(r, "width_mm", Range::open_closed(0.0, 1000.0, "mm"));
     const auto status = r.cells.find("status");
     m.status = status == r.cells.end() || status->second.empty() ? "ok" : status->second;
     for (const auto& [key, value] : {std::pair{"h_mm", m.h_mm}, {"vc_m_per_min", m.vc_m_per_min},

@@ -11,6 +11,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/range.hpp"
+
 namespace mpmcut {
 
 // A data file's rows with their line numbers, for error messages "file:line: column 'x': ...".
@@ -28,6 +30,9 @@ struct DataFile {
   void require_columns(const std::vector<std::string>& names) const;
   // The cell as a number: NaN if blank; InputError naming file, line and column if it is not a number.
   double number(const Row& row, const std::string& column) const;
+  // An optional cell within `range`: none if blank (or the column is absent); InputError naming file, line and
+  // column if it is not a number or out of the range ("must be in (-45, 45) degrees, got 50").
+  std::optional<double> number_in(const Row& row, const std::string& column, const Range& range) const;
   // A misspelt optional column (widht_mm) would be ignored silently and change the comparison: a column within an
   // edit or two of a `known` one is an InputError naming it; other extra columns (notes) are left alone.
   void refuse_misspelt_columns(const std::vector<std::string>& known) const;
@@ -55,6 +60,10 @@ struct MeasuredForces {
   // The forces per mm of width: divided by the file's width, or by `assumed_width_mm` where it gives none.
   MeasuredForces per_mm_of_width(double assumed_width_mm) const;
 };
+
+// The tool's angles where a measurement file gives them (the cutting preset's ranges), degrees.
+inline constexpr Range kRakeColumn = Range::open(-45.0, 45.0, "degrees");
+inline constexpr Range kClearanceColumn = Range::open(0.0, 45.0, "degrees");
 
 // The columns a force file must have (calibration measurements: the same columns); min/max, n_tests,
 // status, chip_thickness_um, rake_deg, clearance_deg and width_mm are optional (min = max = mean, n = 1, "ok", none,
