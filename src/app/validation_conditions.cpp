@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 #include <utility>
@@ -158,15 +159,17 @@ ConditionRunSettings run_settings(const Options& o) {
 // that name a speed to simulate; with a user's force file, its rows only.
 std::vector<Condition> matrix_conditions(const ConditionRunSettings& settings, const ForceData& data) {
   std::vector<Condition> conditions;
+  const std::vector<MeasuredForces> rows = read_measured_forces(data.file);
   std::map<std::string, int> line_of_id;
-  for (const MeasuredForces& m : read_measured_forces(data.file)) {
+  for (const MeasuredForces& m : rows) {
     Condition c;
     static_cast<CuttingCondition&>(c) = force_condition(m);
     // Forces per mm of width from here on: the file's width, or b = 1 mm ASSUMED (the simulated cut is 1 mm wide).
     c.measured = m.per_mm_of_width(1.0);
+    // The reader refuses a cut given twice; ids print 6 digits, so cuts closer than that would share a directory.
     if (const auto [it, added] = line_of_id.emplace(c.id, m.line); !added)
-      throw InputError(fmt::format("{}:{}: the condition {} is on line {} already (one row per h, speed and tool "
-                                   "angles: rows of repeated tests are averaged into one, as in the data files)",
+      throw InputError(fmt::format("{}:{}: the condition {} is on line {} already: h, speed, edge radius or angles "
+                                   "closer than the 6 digits of the result directory's name",
                                    data.file.source, m.line, c.id, it->second));
     conditions.push_back(c);
   }

@@ -120,6 +120,13 @@ class PyRun {
   void stop() { run_->stop_token().request_stop(); }
   fs::path checkpoint() {
     refuse_while_stepping("checkpoint");
+    // A checkpoint after the final outputs would be newer than the summary it contradicts: resume would continue
+    // a complete run, or one the summary calls failed.
+    if (exit_code_)
+      throw std::runtime_error(fmt::format("Run.checkpoint: the run has finished (status \"{}\"); {}", status(),
+                                           status() == run_status::interrupted
+                                               ? "its checkpoint at the stop is in checkpoints/ (Run.resume continues it)"
+                                               : "there is nothing left to restart"));
     return run_->write_checkpoint();
   }
   py::dict particles(py::handle self) {

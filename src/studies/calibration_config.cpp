@@ -182,6 +182,9 @@ CalibrationConfig read_calibration_config(const fs::path& file, std::string_view
       std::optional<double> rake, clearance;
       if (s.has("rake_deg")) rake.emplace(s.number("rake_deg", 0.0));
       if (s.has("clearance_deg")) clearance.emplace(s.number("clearance_deg", 0.0));
+      // And the edge radius among rows of one tool's angles (a file with several edge radii).
+      std::optional<double> edge_radius;
+      if (s.has("edge_radius_um")) edge_radius.emplace(s.number("edge_radius_um", 0.0));
       const int cells_per_feed = static_cast<int>(s.integer("cells_per_feed", 0));  // 0: [runs] cells_per_feed
       if (s.has("cells_per_feed"))
         s.check("cells_per_feed", cells_per_feed >= 2 && cells_per_feed <= 100,
@@ -195,20 +198,22 @@ CalibrationConfig read_calibration_config(const fs::path& file, std::string_view
       int matches = 0;
       for (const MeasuredForces& r : rows)
         if (std::abs(r.h_mm - h) < 1e-9 && std::abs(r.vc_m_per_min - vc) < 1e-6 && same_angle(rake, r.rake_deg) &&
-            same_angle(clearance, r.clearance_deg)) {
+            same_angle(clearance, r.clearance_deg) &&
+            (!edge_radius || std::abs(r.edge_radius_um - *edge_radius) < 1e-9)) {
           found = &r;
           ++matches;
           matching_lines += (matching_lines.empty() ? "" : ", ") + std::to_string(r.line);
         }
       const std::string angles = (rake ? fmt::format(", rake_deg = {}", *rake) : std::string()) +
-                                 (clearance ? fmt::format(", clearance_deg = {}", *clearance) : std::string());
+                                 (clearance ? fmt::format(", clearance_deg = {}", *clearance) : std::string()) +
+                                 (edge_radius ? fmt::format(", edge_radius_um = {}", *edge_radius) : std::string());
       if (!found)
         s.fail("vc_m_per_min", fmt::format("no row with h_mm = {} and vc_m_per_min = {}{} in {}", h, vc, angles,
                                            c.measurements_source));
       if (matches > 1)
         s.fail("vc_m_per_min",
-               fmt::format("{} rows of {} match h_mm = {}, vc_m_per_min = {}{} (lines {}): name one with rake_deg "
-                           "and/or clearance_deg",
+               fmt::format("{} rows of {} match h_mm = {}, vc_m_per_min = {}{} (lines {}): name one with rake_deg, "
+                           "clearance_deg and/or edge_radius_um",
                            matches, c.measurements_source, h, vc, angles, matching_lines));
       for (const auto* list : {&c.training, &c.held_back})
         for (const MeasuredForces& r : *list)

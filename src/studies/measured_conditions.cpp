@@ -3,12 +3,15 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <map>
+#include <set>
 #include <sstream>
 #include <tuple>
 
 #include <fmt/format.h>
 
 #include "analysis/chip_analysis.hpp"
+#include "cutting/cutting_parameters.hpp"
 #include "cutting/cutting_resolution.hpp"
 #include "io/edit_distance.hpp"
 #include "io/input_error.hpp"
@@ -142,6 +145,9 @@ std::vector<MeasuredForces> read_measured_forces(const DataFile& file) {
   known.insert(known.end(), optional_force_columns().begin(), optional_force_columns().end());
   file.refuse_misspelt_columns(known);
   std::vector<MeasuredForces> out;
+  // The tool as simulated: angles left out are the preset's, so a row giving those explicitly is the same cut.
+  const CuttingParameters preset;
+  std::map<std::tuple<double, double, double, double, double>, int> line_of_cut;
   for (const DataFile::Row& r : file.rows) {
     MeasuredForces m;
     m.line = r.line;
@@ -184,8 +190,18 @@ std::vector<MeasuredForces> read_measured_forces(const DataFile& file) {
                                      {"Fc_mean_N", m.fc_N}, {"edge_radius_um", m.edge_radius_um}})
       if (!(value > 0))
         throw InputError(fmt::format("{}:{}: column '{}': must be positive, got {}", file.source, r.line, key, value));
+    const std::tuple cut{m.h_mm, m.vc_m_per_min, m.edge_radius_um, m.rake_deg.value_or(preset.rake_angle_deg),
+                         m.clearance_deg.value_or(preset.clearance_angle_deg)};
+    if (const auto [it, added] = line_of_cut.emplace(cut, m.line); !added)
+      throw InputError(fmt::format("{}:{}: the same cut as line {} (h, speed, edge radius and tool angles; a row "
+                                   "without angles has the preset's, rake {:g} deg and clearance {:g} deg): one row "
+                                   "per cut, rows of repeated tests averaged into one as in the data files",
+                                   file.source, r.line, it->second, preset.rake_angle_deg, preset.clearance_angle_deg));
     out.push_back(m);
   }
+  std::map<std::string, std::set<double>> radii_of_id;
+  for (const MeasuredForces& m : out) radii_of_id[force_condition_id(m)].insert(m.edge_radius_um);
+  for (MeasuredForces& m : out) m.edge_radius_in_id = radii_of_id[force_condition_id(m)].size() > 1;
   return out;
 }
 
@@ -200,6 +216,7 @@ std::string force_condition_id(const MeasuredForces& m) {
   std::string id = fmt::format("forces_h{:g}mm_vc{:g}mpmin", m.h_mm, m.vc_m_per_min);
   if (m.rake_deg) id += fmt::format("_rake{:g}deg", *m.rake_deg);
   if (m.clearance_deg) id += fmt::format("_clearance{:g}deg", *m.clearance_deg);
+  if (m.edge_radius_in_id) id += fmt::format("_rn{:g}um", m.edge_radius_um);
   return id;
 }
 

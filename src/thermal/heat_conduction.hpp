@@ -53,11 +53,18 @@ struct ConductionScratch {
   std::vector<double> node_low;   // K, then J/m (the nodal shares of the cut heat)
   std::vector<double> node_high;  // K, then J/(K m) (the uncut particles' heat capacity)
   std::vector<double> cut_heat;   // J/m per particle
+  // At fixed-temperature nodes: the P2G temperature, K, and the sums of w m c (x_p - x_node), J m/(K m),
+  // and of w m c grad T_p, J/(m^2 m) (empty where no node is fixed).
+  std::vector<double> face_mapped;
+  std::vector<Vec2> face_offset;
+  std::vector<Vec2> face_gradient;
 };
 
 // One explicit conduction update over dt: nodal temperatures (from P2G) and heat capacities, the
 // conductive nodal heat rate -sum V k gradS . gradT_p, fixed-temperature nodes, and temperature
-// increments (not values) back to the particles so the field is not smeared. An increment that
+// increments (not values) back to the particles so the field is not smeared. A fixed node's value
+// holds at the node; its P2G value, a mean over the particles on one side of it, is brought to the
+// mean of the field through that value (see the .cpp). An increment that
 // would take a particle outside the range of the temperatures around it (the old ones of the
 // particles sharing its nodes, its nodes' new and sink temperatures) is cut back to it, and the heat
 // cut is taken from the particles that share the nodes (conservative). `colouring` holds this

@@ -259,7 +259,9 @@ def check_measurements(binary, scratch):
         fail(f"validation.csv with --measurements: {rows}")
     for text, words in (("0.05,120,110,60\n", ["my_bad.csv:1", "missing column(s) 'edge_radius_um'"]),
                         ("0.05,120,110,60,20,50\n", ["my_bad.csv:3", "rake_deg", "(-45, 45)"]),
-                        ("0.05,120,110,60,20,5\n0.05,120,111,61,20,5\n", ["my_bad.csv:4", "on line 3 already"]),
+                        ("0.05,120,110,60,20,5\n0.05,120,111,61,20,5\n", ["my_bad.csv:4", "the same cut as line 3"]),
+                        # rake 0 given is the preset's: the cut of a row without angles, under another id
+                        ("0.05,120,110,60,20,\n0.05,120,111,61,20,0\n", ["my_bad.csv:4", "the same cut as line 3"]),
                         ("0.05,120,110,60,20,5,120,100\n", ["my_bad.csv:3", "Fc_mean_N", "must lie in [min, max] = [120, 100]"])):
         bad_file = os.path.join(scratch, "my_bad.csv")
         with open(bad_file, "w") as f:
@@ -272,6 +274,13 @@ def check_measurements(binary, scratch):
         if not all(w in bad.stderr for w in words):
             fail(f"bad measurement file: the error must name {words}: {bad.stderr}")
     validate(binary, "--list", "--measurements", os.path.join(scratch, "none.csv"), "--out", mine + "_bad", expect=2)
+    # Two tools that differ only in their edge radius are two conditions, named by r_n.
+    edges_file = os.path.join(scratch, "my_edges.csv")
+    with open(edges_file, "w") as f:
+        f.write("h_mm,vc_m_per_min,Fc_mean_N,Ff_mean_N,edge_radius_um\n0.05,120,110,60,20\n0.05,120,120,70,40\n")
+    edges = listed(validate(binary, "--list", "--measurements", edges_file, "--out", mine + "_edges"))
+    if edges != ["forces_h0.05mm_vc120mpmin_rn20um", "forces_h0.05mm_vc120mpmin_rn40um"]:
+        fail(f"two edge radii at one h and speed: --list must show both, named by r_n: {edges}")
 
 
 def check_chip_observations(binary, scratch):

@@ -171,6 +171,10 @@ def test_stop_checkpoint_and_resume_continue_the_same_run(tmp_path, quick_case, 
     assert early.finish() == "interrupted"
     assert early.summary()["message"].startswith("ended by the caller before the end time at step 10")
     assert run.summary()["message"].startswith("stopped on request")
+    # A finished run takes no checkpoint: it would be newer than the summary it contradicts.
+    for finished in (run, resumed):
+        with pytest.raises(RuntimeError, match="the run has finished"):
+            finished.checkpoint()
 
 
 def test_the_gil_is_released_while_stepping(tmp_path, quick_case, short):

@@ -265,6 +265,38 @@ TEST(CalibrationConfig, ToolAnglesPickARowAmongRowsOfOneCondition) {
   EXPECT_NE(none.find("no row with h_mm = 0.1 and vc_m_per_min = 100, rake_deg = 5"), std::string::npos) << none;
 }
 
+// Two tools that differ in the edge radius only: two conditions, whose ids name r_n (the others keep theirs), and
+// calibrate picks one by edge_radius_um. A row that gives the preset's angles is the cut of a row without them.
+TEST(CalibrationConfig, EdgeRadiusPicksARowAmongRowsOfOneTool) {
+  const std::vector<MeasuredForces> rows = read_measured_forces(
+      read_data_file("h_mm,vc_m_per_min,Fc_mean_N,Ff_mean_N,edge_radius_um\n0.1,100,200,120,20\n0.1,100,230,150,40\n"
+                     "0.1,200,190,110,20\n",
+                     "edges.csv"));
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(force_condition_id(rows[0]), "forces_h0.1mm_vc100mpmin_rn20um");
+  EXPECT_EQ(force_condition_id(rows[1]), "forces_h0.1mm_vc100mpmin_rn40um");
+  EXPECT_EQ(force_condition_id(rows[2]), "forces_h0.1mm_vc200mpmin");
+  write("edges.csv", "h_mm,vc_m_per_min,Fc_mean_N,Ff_mean_N,edge_radius_um\n0.1,100,200,120,20\n0.1,100,230,150,40\n");
+  const std::string head = "name = \"fit\"\n" + kParameter + "[data]\nmeasurements = \"edges.csv\"\n";
+  const CalibrationConfig c = read_calibration_config(
+      write("pick_edge.toml", head + "training = [{h_mm = 0.1, vc_m_per_min = 100, edge_radius_um = 40}]\n"),
+      kMeasurements);
+  ASSERT_EQ(c.training.size(), 1u);
+  EXPECT_EQ(c.training[0].fc_N, 230.0);
+  const std::string e = error_of(head + "training = [{h_mm = 0.1, vc_m_per_min = 100}]\n");
+  EXPECT_NE(e.find("(lines 2, 3): name one with rake_deg, clearance_deg and/or edge_radius_um"), std::string::npos) << e;
+
+  try {
+    (void)read_measured_forces(read_data_file(
+        "h_mm,vc_m_per_min,Fc_mean_N,Ff_mean_N,edge_radius_um,rake_deg,clearance_deg\n0.1,100,200,120,20,,\n"
+        "0.1,100,210,125,20,0,11\n",
+        "same.csv"));
+    ADD_FAILURE() << "a row with the preset's angles given is the cut of a row without them";
+  } catch (const InputError& err) {
+    EXPECT_NE(std::string(err.what()).find("same.csv:3: the same cut as line 2"), std::string::npos) << err.what();
+  }
+}
+
 TEST(CalibrationConfig, UnknownOptimizerAlgorithm) {
   const std::string e = error_of("name = \"fit\"\n" + kParameter + kData + "[optimizer]\nglobal = \"LN_BOBYQA\"\n");
   EXPECT_NE(e.find("optimizer.global"), std::string::npos) << e;

@@ -29,19 +29,44 @@ double max_error_vs_erfc(ShapeFunctionKind kind, int cells, double t_end, double
 }
 }  // namespace
 
+// Largest error over the particles within 0.6 of the face, as a fraction of the step: 0.016 % at 100
+// cells (2.0 % while the face node's one-sided P2G mean was reset to the face's value).
 TEST(HeatConduction, SlabWithStepTemperatureMatchesErfc) {
-  EXPECT_LT(max_error_vs_erfc(ShapeFunctionKind::UGimp, 100, 0.02), 0.02);
-  EXPECT_LT(max_error_vs_erfc(ShapeFunctionKind::Linear, 100, 0.02), 0.02);
+  EXPECT_LT(max_error_vs_erfc(ShapeFunctionKind::UGimp, 100, 0.02), 0.002);
+  EXPECT_LT(max_error_vs_erfc(ShapeFunctionKind::Linear, 100, 0.02), 0.002);
 }
 
 // A stiff solid: the mechanical step is ~8x below the conduction limit, so conduction is
 // sub-cycled (one update per several steps over the time they covered), as in metal cutting.
 TEST(HeatConduction, SubcycledConductionMatchesErfc) {
-  EXPECT_LT(max_error_vs_erfc(ShapeFunctionKind::UGimp, 100, 0.02, 1e7), 0.02);
+  EXPECT_LT(max_error_vs_erfc(ShapeFunctionKind::UGimp, 100, 0.02, 1e7), 0.002);
 }
 
+// A face held at a fixed temperature cannot heat (or cool) the body past that temperature (maximum
+// principle). The face node's P2G value is a mean over the particles on one side of it; resetting that mean
+// to the face's value lifted the first cell's particles 16-19 % of the step past it in the first updates.
+TEST(HeatConduction, FixedFaceTemperatureBoundsTheSlab) {
+  for (const double face : {400.0, 200.0}) {
+    Scene s = heat_slab_scene(ShapeFunctionKind::UGimp, 50);
+    s.thermal.left = face;
+    Simulation sim(s);
+    double lo = 300.0, hi = 300.0;
+    while (sim.time() < 0.02) {
+      sim.step();
+      for (const double T : sim.particles().temperature) lo = std::min(lo, T), hi = std::max(hi, T);
+    }
+    const double tolerance = 0.005 * std::abs(face - 300.0);
+    EXPECT_LE(hi, std::max(face, 300.0) + tolerance) << "face " << face << " K";
+    EXPECT_GE(lo, std::min(face, 300.0) - tolerance) << "face " << face << " K";
+    EXPECT_GT(std::abs(sim.particles().temperature.front() - 300.0), 0.5 * std::abs(face - 300.0));  // it conducted
+  }
+}
+
+// Second order in the cell: 0.25 % at 25 cells, 0.016 % at 100 (16x for 4x finer). The reset of the face
+// node's one-sided mean made it first order (8.1 % and 2.0 %, 4x): a ratio above 8 fails that.
 TEST(HeatConduction, ErrorFallsWithCellSize) {
-  EXPECT_LT(max_error_vs_erfc(ShapeFunctionKind::UGimp, 100, 0.02), max_error_vs_erfc(ShapeFunctionKind::UGimp, 25, 0.02));
+  EXPECT_GT(max_error_vs_erfc(ShapeFunctionKind::UGimp, 25, 0.02),
+            8.0 * max_error_vs_erfc(ShapeFunctionKind::UGimp, 100, 0.02));
 }
 
 namespace {
