@@ -269,14 +269,21 @@ std::string resolution_text(const Options& o) {
           : std::string());
 }
 
-// The tool's angles of a condition as the measurements give them ("" where they give none).
-std::string tool_text(const Condition& c) {
+static bool edge_radius_names_tool(const Condition& c) { return c.measured && c.measured->edge_radius_names_tool; }
+
+// The tool of a condition as the measurements give it: its angles, and its edge radius where the file's tools differ
+// in it ("" where they give none).
+std::string tool_text(const Condition& c, bool with_edge_radius) {
   std::string t = c.rake_deg ? fmt::format("rake {:g}°", *c.rake_deg) : "";
   if (c.clearance_deg) t += (t.empty() ? "" : ", ") + fmt::format("clearance {:g}°", *c.clearance_deg);
+  if (with_edge_radius && edge_radius_names_tool(c)) t += (t.empty() ? "" : ", ") + fmt::format("r_n {:g} µm", c.edge_radius_um);
   return t;
 }
 
-// Conditions cut with the same tool angles (as far as the measurements give them).
-bool same_tool(const Condition& a, const Condition& b) { return a.rake_deg == b.rake_deg && a.clearance_deg == b.clearance_deg; }
+// Conditions cut with the same tool (as far as the measurements give it).
+bool same_tool(const Condition& a, const Condition& b) {
+  return a.rake_deg == b.rake_deg && a.clearance_deg == b.clearance_deg &&
+         (!edge_radius_names_tool(a) || a.edge_radius_um == b.edge_radius_um);
+}
 
 }  // namespace mpmcut::validation

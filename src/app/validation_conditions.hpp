@@ -110,10 +110,12 @@ std::string resolution_text(const Options& o);
 
 bool same_h(double a, double b);
 bool same_speed(double a, double b);
-// Conditions cut with the same tool angles (as far as the measurements give them).
+// Conditions cut with the same tool (as far as the measurements give it: angles, and the edge radius where the
+// file's tools differ in it).
 bool same_tool(const Condition& a, const Condition& b);
-// The tool's angles of a condition as the measurements give them ("" where they give none).
-std::string tool_text(const Condition& c);
+// The tool of a condition as the measurements give it ("" where they give none): its angles, and its edge radius
+// where the file's tools differ in it (unless with_edge_radius is false: a text that names r_n anyway).
+std::string tool_text(const Condition& c, bool with_edge_radius = true);
 
 std::string join(const std::vector<std::string>& parts, const std::string& sep);
 

@@ -55,7 +55,7 @@ std::optional<double> melting_temperature(const fs::path& dir) {
 
 std::string condition_label(const Condition& c) {
   const MeasuredForces& m = *c.measured;
-  const std::string tool = tool_text(c);
+  const std::string tool = tool_text(c, false);
   return fmt::format("h = {:g} mm, vc = {:g} m/min ({:.3g} m/s), r_n = {:g} µm{}, n = {}{}", m.h_mm, m.vc_m_per_min,
                      c.speed_m_per_s, m.edge_radius_um, tool.empty() ? "" : ", " + tool, m.n_tests,
                      m.status == "ok" ? "" : ", status " + m.status);

@@ -199,9 +199,12 @@ std::vector<MeasuredForces> read_measured_forces(const DataFile& file) {
                                    file.source, r.line, it->second, preset.rake_angle_deg, preset.clearance_angle_deg));
     out.push_back(m);
   }
+  // One cut with several edge radii: the file's tools differ in r_n (ids and tools name it; files without, such as
+  // the built-in one whose r_n was measured per test, keep theirs).
   std::map<std::string, std::set<double>> radii_of_id;
   for (const MeasuredForces& m : out) radii_of_id[force_condition_id(m)].insert(m.edge_radius_um);
-  for (MeasuredForces& m : out) m.edge_radius_in_id = radii_of_id[force_condition_id(m)].size() > 1;
+  const bool by_radius = std::any_of(radii_of_id.begin(), radii_of_id.end(), [](const auto& r) { return r.second.size() > 1; });
+  for (MeasuredForces& m : out) m.edge_radius_names_tool = by_radius;
   return out;
 }
 
@@ -216,7 +219,7 @@ std::string force_condition_id(const MeasuredForces& m) {
   std::string id = fmt::format("forces_h{:g}mm_vc{:g}mpmin", m.h_mm, m.vc_m_per_min);
   if (m.rake_deg) id += fmt::format("_rake{:g}deg", *m.rake_deg);
   if (m.clearance_deg) id += fmt::format("_clearance{:g}deg", *m.clearance_deg);
-  if (m.edge_radius_in_id) id += fmt::format("_rn{:g}um", m.edge_radius_um);
+  if (m.edge_radius_names_tool) id += fmt::format("_rn{:g}um", m.edge_radius_um);
   return id;
 }
 

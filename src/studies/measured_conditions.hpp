@@ -56,8 +56,9 @@ struct MeasuredForces {
   std::optional<double> width_mm;
   int n_tests = 0;
   std::string status;
-  // Another row of the file has the same h, speed and angles with another edge radius: the id names r_n.
-  bool edge_radius_in_id = false;
+  // The file holds a cut (h, speed, angles) with several edge radii: its tools differ in r_n, and every row's id
+  // and tool name it.
+  bool edge_radius_names_tool = false;
 
   // The forces per mm of width: divided by the file's width, or by `assumed_width_mm` where it gives none.
   MeasuredForces per_mm_of_width(double assumed_width_mm) const;
@@ -86,8 +87,8 @@ struct CuttingCondition {
 };
 
 // The id (result directory name) of a force condition: forces_h<h>mm_vc<v>mpmin, with _rake<r>deg and
-// _clearance<c>deg where the measurements give the tool's angles, and _rn<r>um where the file holds that cut
-// with several edge radii.
+// _clearance<c>deg where the measurements give the tool's angles, and _rn<r>um where the file holds a cut with
+// several edge radii.
 std::string force_condition_id(const MeasuredForces& m);
 // The simulated condition of a row of measured forces.
 CuttingCondition force_condition(const MeasuredForces& m);

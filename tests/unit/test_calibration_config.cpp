@@ -265,7 +265,7 @@ TEST(CalibrationConfig, ToolAnglesPickARowAmongRowsOfOneCondition) {
   EXPECT_NE(none.find("no row with h_mm = 0.1 and vc_m_per_min = 100, rake_deg = 5"), std::string::npos) << none;
 }
 
-// Two tools that differ in the edge radius only: two conditions, whose ids name r_n (the others keep theirs), and
+// Two tools that differ in the edge radius only: two conditions, and every id of the file names r_n, and
 // calibrate picks one by edge_radius_um. A row that gives the preset's angles is the cut of a row without them.
 TEST(CalibrationConfig, EdgeRadiusPicksARowAmongRowsOfOneTool) {
   const std::vector<MeasuredForces> rows = read_measured_forces(
@@ -275,7 +275,7 @@ TEST(CalibrationConfig, EdgeRadiusPicksARowAmongRowsOfOneTool) {
   ASSERT_EQ(rows.size(), 3u);
   EXPECT_EQ(force_condition_id(rows[0]), "forces_h0.1mm_vc100mpmin_rn20um");
   EXPECT_EQ(force_condition_id(rows[1]), "forces_h0.1mm_vc100mpmin_rn40um");
-  EXPECT_EQ(force_condition_id(rows[2]), "forces_h0.1mm_vc200mpmin");
+  EXPECT_EQ(force_condition_id(rows[2]), "forces_h0.1mm_vc200mpmin_rn20um");  // the file's tools differ in r_n
   write("edges.csv", "h_mm,vc_m_per_min,Fc_mean_N,Ff_mean_N,edge_radius_um\n0.1,100,200,120,20\n0.1,100,230,150,40\n");
   const std::string head = "name = \"fit\"\n" + kParameter + "[data]\nmeasurements = \"edges.csv\"\n";
   const CalibrationConfig c = read_calibration_config(
