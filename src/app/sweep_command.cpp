@@ -47,7 +47,7 @@ struct SweepOptions {
   int threads = 1;
   std::string out_dir;
   std::vector<std::string> overrides;
-  std::string vary;  // --vary KEY=V1,V2,...: one more grid dimension over any key --set takes; empty: none
+  std::vector<std::string> vary;  // --vary KEY=V1,V2,... (repeatable): a grid dimension over any key --set takes
   bool no_plots = false;
 };
 
@@ -58,7 +58,6 @@ struct VariedKey {
 };
 
 VariedKey parse_vary(const std::string& text) {
-  if (text.empty()) return {"", {""}};
   const auto eq = text.find('=');
   if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
     throw InputError(fmt::format("--vary '{}': expected KEY=V1,V2,... (a key as for --set, e.g. "
@@ -75,10 +74,38 @@ VariedKey parse_vary(const std::string& text) {
   return v;
 }
 
-// A name part for a case directory: the key's last part and the value, e.g. "rake_angle_deg-5".
-std::string varied_name(const VariedKey& v, const std::string& value) {
-  if (v.key.empty()) return "";
-  std::string name = "_" + v.key.substr(v.key.rfind('.') + 1) + value;
+// Every --vary, each key once.
+std::vector<VariedKey> parse_varied_keys(const std::vector<std::string>& texts) {
+  std::vector<VariedKey> keys;
+  for (const std::string& text : texts) {
+    VariedKey v = parse_vary(text);
+    for (const VariedKey& earlier : keys)
+      if (earlier.key == v.key)
+        throw InputError(fmt::format("--vary {}: the key is varied twice; give all its values in one --vary", v.key));
+    keys.push_back(std::move(v));
+  }
+  return keys;
+}
+
+// Every combination of the varied keys' values, the first key's slowest ({{}} when none is varied).
+std::vector<std::vector<std::string>> value_combinations(const std::vector<VariedKey>& keys) {
+  std::vector<std::vector<std::string>> combinations{{}};
+  for (const VariedKey& k : keys) {
+    std::vector<std::vector<std::string>> longer;
+    for (const auto& c : combinations)
+      for (const std::string& value : k.values) {
+        longer.push_back(c);
+        longer.back().push_back(value);
+      }
+    combinations = std::move(longer);
+  }
+  return combinations;
+}
+
+// A name part for a case directory: each key's last part and its value, e.g. "_rake_angle_deg-5_friction0.2".
+std::string varied_name(const std::vector<VariedKey>& keys, const std::vector<std::string>& values) {
+  std::string name;
+  for (std::size_t k = 0; k < keys.size(); ++k) name += "_" + keys[k].key.substr(keys[k].key.rfind('.') + 1) + values[k];
   for (char& ch : name)
     if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '-' && ch != '.' && ch != '_' && ch != '+') ch = '_';
   return name;
@@ -99,31 +126,45 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
   }
   const fs::path out = o.out_dir.empty() ? fs::path("results") / ("sweep_" + fs::path(o.case_file).stem().string())
                                          : fs::path(o.out_dir);
-  const VariedKey varied = parse_vary(o.vary);
-  // The grid-convergence report groups runs by speed and feed only.
-  if (!varied.key.empty() && o.cells_per_feed.size() > 1)
-    throw InputError("--vary and a resolution study (--cells-per-feed with two or more values) do not combine: run one "
-                     "convergence sweep per value (--set " + varied.key + "=...)");
-  // The grid's own keys have their own options (the grid's --set would be overridden by --vary's).
-  for (const char* own : {"cutting.cutting_speed", "cutting.cutting_speed_m_per_min", "cutting.uncut_chip_thickness"})
-    if (varied.key == own)
-      throw InputError(fmt::format("--vary {}: the sweep's grid sets it; use --speeds (m/s) or --feeds (m)", own));
-  if (varied.key == "cutting.cell_size" && !o.cells_per_feed.empty())
-    throw InputError("--vary cutting.cell_size with --cells-per-feed: give the resolution one way");
+  const std::vector<VariedKey> varied = parse_varied_keys(o.vary);
+  const std::vector<std::vector<std::string>> combinations = value_combinations(varied);
+  for (const VariedKey& k : varied) {
+    // The grid-convergence report groups runs by speed and feed only.
+    if (o.cells_per_feed.size() > 1)
+      throw InputError("--vary and a resolution study (--cells-per-feed with two or more values) do not combine: run "
+                       "one convergence sweep per value (--set " + k.key + "=...)");
+    // The grid's own keys have their own options (the grid's --set would be overridden by --vary's).
+    for (const char* own : {"cutting.cutting_speed", "cutting.cutting_speed_m_per_min", "cutting.uncut_chip_thickness"})
+      if (k.key == own)
+        throw InputError(fmt::format("--vary {}: the sweep's grid sets it; use --speeds (m/s) or --feeds (m)", own));
+    if (k.key == "cutting.cell_size" && !o.cells_per_feed.empty())
+      throw InputError("--vary cutting.cell_size with --cells-per-feed: give the resolution one way");
+  }
   // Every value of the grid and of the varied key must make a valid case: checked before anything runs (file, key,
   // allowed range); `what` names the option and the value in the error.
-  const auto check_value_reads = [&](const std::string& what, const std::string& key, const std::string& value) {
+  const auto check_value_reads = [&](const std::string& what, const std::vector<std::string>& assignments) {
     std::vector<std::string> with = o.overrides;
-    with.push_back(key + "=" + value);
+    with.insert(with.end(), assignments.begin(), assignments.end());
     try {
       (void)load_case(o.case_file, with);
     } catch (const InputError& e) {
       throw InputError(fmt::format("{} makes a case that does not read: {}", what, e.what()));
     }
   };
-  if (!varied.key.empty())
-    for (const std::string& value : varied.values)
-      check_value_reads(fmt::format("--vary {}: the value {}", varied.key, value), varied.key, value);
+  for (const VariedKey& k : varied)
+    for (const std::string& value : k.values)
+      check_value_reads(fmt::format("--vary {}: the value {}", k.key, value), {k.key + "=" + value});
+  // Keys that depend on each other (a rake and a clearance that leave no wedge): every combination reads.
+  if (varied.size() > 1)
+    for (const auto& values : combinations) {
+      std::vector<std::string> assignments;
+      std::string shown;
+      for (std::size_t k = 0; k < varied.size(); ++k) {
+        assignments.push_back(varied[k].key + "=" + values[k]);
+        shown += (shown.empty() ? "" : ", ") + assignments.back();
+      }
+      check_value_reads(fmt::format("--vary: the combination {}", shown), assignments);
+    }
   // The case itself (load_case checks it before anything runs) and its own feed.
   double own_feed_m = 0.0;
   {
@@ -151,9 +192,9 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
   given_once(o.feeds_m, "--feeds");
   given_once(o.cells_per_feed, "--cells-per-feed");
   for (double v : o.speeds_m_per_s)
-    check_value_reads(fmt::format("--speeds {:g}: the value", v), "cutting.cutting_speed", fmt::format("{}", v));
+    check_value_reads(fmt::format("--speeds {:g}: the value", v), {fmt::format("cutting.cutting_speed={}", v)});
   for (double h : o.feeds_m)
-    check_value_reads(fmt::format("--feeds {:g}: the value", h), "cutting.uncut_chip_thickness", fmt::format("{}", h));
+    check_value_reads(fmt::format("--feeds {:g}: the value", h), {fmt::format("cutting.uncut_chip_thickness={}", h)});
   std::vector<double> feeds_m = o.feeds_m;
   if (feeds_m.empty()) feeds_m = {own_feed_m};
   const int jobs = o.jobs > 0 ? o.jobs : std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / o.threads);
@@ -161,22 +202,24 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
   struct Case {
     double speed, feed;
     int cells_per_feed;  // 0: the case's own cell size
-    std::string value;   // of the varied key ("" when none is varied)
+    std::vector<std::string> values;  // of the varied keys (none when none is varied)
     fs::path dir;
   };
-  // The plots' series: one per feed and value of the varied key.
+  // The plots' series: one per feed and combination of the varied keys' values.
   const auto series_of = [&](const Case& c) {
-    return fmt::format("h = {:g} mm", c.feed * 1e3) + (varied.key.empty() ? "" : ", " + varied.key + " = " + c.value);
+    std::string s = fmt::format("h = {:g} mm", c.feed * 1e3);
+    for (std::size_t k = 0; k < varied.size(); ++k) s += ", " + varied[k].key + " = " + c.values[k];
+    return s;
   };
   std::vector<Case> cases;
   std::vector<ChildRun> runs;
   const std::vector<int> resolutions = o.cells_per_feed.empty() ? std::vector<int>{0} : o.cells_per_feed;
   for (int n : resolutions)
     for (double h : feeds_m)
-      for (const std::string& value : varied.values)
+      for (const std::vector<std::string>& values : combinations)
       for (double v : o.speeds_m_per_s) {
         const std::string name = fmt::format("v{:g}mps_h{:g}mm", v, h * 1e3) + (n > 0 ? fmt::format("_n{}", n) : "") +
-                                 varied_name(varied, value);
+                                 varied_name(varied, values);
         // Names carry 6 significant digits: two values closer than that would share one directory, and one
         // case's results would replace the other's (--speeds 20,20.0000001 ran both into v20mps_h0.1mm).
         for (const Case& earlier : cases)
@@ -185,7 +228,7 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
                 "two cases of the grid would share the directory {} (speeds {} and {} m/s, feeds {} and {} m): the case "
                 "names carry 6 significant digits; give values that differ within them",
                 name, earlier.speed, v, earlier.feed, h));
-        cases.push_back({v, h, n, value, out / name});
+        cases.push_back({v, h, n, values, out / name});
         ChildRun run;
         run.name = name;
         // --keep-complete: a rerun of the sweep keeps the cases already complete and resumes interrupted ones.
@@ -196,16 +239,19 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
         run.args.insert(run.args.end(), {"--set", fmt::format("cutting.cutting_speed={}", v), "--set",
                                          fmt::format("cutting.uncut_chip_thickness={}", h)});
         if (n > 0) run.args.insert(run.args.end(), {"--set", fmt::format("cutting.cell_size={}", h / n)});
-        if (!varied.key.empty()) run.args.insert(run.args.end(), {"--set", varied.key + "=" + value});
+        for (std::size_t k = 0; k < varied.size(); ++k)
+          run.args.insert(run.args.end(), {"--set", varied[k].key + "=" + values[k]});
         run.log_file = out / "logs" / (name + ".log");
         runs.push_back(run);
       }
   fs::create_directories(out / "logs");
+  std::string varied_text;
+  for (const VariedKey& k : varied) varied_text += fmt::format(" x {} values of {}", k.values.size(), k.key);
   std::cout << fmt::format("mpmcut sweep: {} cases ({} speeds x {} feeds x {} resolutions{}) from {}, {}, each with "
                            "--threads {} (change with --jobs/--threads); results in {} (complete cases of an earlier "
                            "sweep there are kept)\n",
                            runs.size(), o.speeds_m_per_s.size(), feeds_m.size(), resolutions.size(),
-                           varied.key.empty() ? "" : fmt::format(" x {} values of {}", varied.values.size(), varied.key),
+                           varied_text,
                            o.case_file,
                            concurrency_text(jobs),
                            o.threads, out.string())
@@ -255,10 +301,10 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
                     "plastic / W", "damage / W", "friction / W", "kinetic+elastic / W", "numerical / W",
                     "rake friction work / travel (N/mm)", "edge+flank friction work / travel (N/mm)",
                     "rake slip speed (m/s)", "wall (s)", "message", "series"};
-  // The varied key's value beside the feed, under the key's own name.
-  if (!varied.key.empty()) {
-    table.columns.insert(table.columns.begin() + 4, varied.key);
-    table.headings.insert(table.headings.begin() + 4, varied.key);
+  // The varied keys' values beside the feed, each under the key's own name.
+  for (std::size_t k = 0; k < varied.size(); ++k) {
+    table.columns.insert(table.columns.begin() + 4 + k, varied[k].key);
+    table.headings.insert(table.headings.begin() + 4 + k, varied[k].key);
   }
   int failed = 0;
   std::vector<CaseResult> results;
@@ -290,7 +336,7 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
                           format_number(r.tool_force_split.rake_slip_speed_m_per_s, 3),
                           format_number(r.wall_time_s ? r.wall_time_s : std::optional<double>(runs[i].wall_time_s), 3),
                           r.message, series_of(cases[i])});
-    if (!varied.key.empty()) table.rows.back().insert(table.rows.back().begin() + 4, cases[i].value);
+    table.rows.back().insert(table.rows.back().begin() + 4, cases[i].values.begin(), cases[i].values.end());
   }
   table.write_csv(out / "sweep.csv");
   write_file_atomically(out / "sweep.md", [&](std::ostream& s) {
@@ -311,11 +357,11 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
                       "chip_thickness_change", "pitch_change", "chip_type_same"};
       conv.headings = {"V (m/s)", "h (mm)", "cells across h", "ΔFc", "ΔFt", "Δ(t0/tc)", "Δpitch", "same chip type"};
       for (double h : feeds_m)
-        for (const std::string& value : varied.values)
+        for (const std::vector<std::string>& values : combinations)
         for (double v : o.speeds_m_per_s) {
           std::vector<std::size_t> idx;
           for (std::size_t i = 0; i < cases.size(); ++i)
-            if (cases[i].speed == v && cases[i].feed == h && cases[i].value == value && results[i].status == "complete")
+            if (cases[i].speed == v && cases[i].feed == h && cases[i].values == values && results[i].status == "complete")
               idx.push_back(i);
           std::sort(idx.begin(), idx.end(), [&](auto a, auto b) { return cases[a].cells_per_feed < cases[b].cells_per_feed; });
           if (idx.size() < 2) continue;
@@ -422,7 +468,8 @@ void add_sweep_command(CLI::App& app) {
   sweep->add_option("--vary", o->vary,
                     "One more grid dimension: KEY=V1,V2,... over any key --set takes, e.g. "
                     "cutting.rake_angle_deg=-5,0,10 or cutting.edge_radius=5e-6,20e-6 or cutting.friction=0.2,0.5; "
-                    "every value is checked before anything runs (docs/results.md)");
+                    "repeatable (every combination of the keys' values is a case); every value is checked before "
+                    "anything runs (docs/results.md)");
   sweep->add_flag("--no-plots", o->no_plots, "Only the tables");
   sweep->callback([o, &app]() {
     int code = 0;

@@ -136,19 +136,23 @@ def check_vary(binary, case, scratch):
     """sweep --vary: one more grid dimension over any key --set takes; each value reaches its runs (a larger rake
     angle cuts with a smaller force), sweep.csv names the key and the series; a bad value exits 2 before any run."""
     out = os.path.join(scratch, "vary")
-    p = subprocess.run([binary, "sweep", case, "--speeds", "20", "--vary", "cutting.rake_angle_deg=-5,15", "--jobs", "2",
-                        "--out", out, "--no-plots"], capture_output=True, text=True, timeout=300)
+    # Two keys: every combination is a case (friction with one value: two cases, named and tabled by both keys).
+    p = subprocess.run([binary, "sweep", case, "--speeds", "20", "--vary", "cutting.rake_angle_deg=-5,15", "--vary",
+                        "cutting.friction=0.35", "--jobs", "2", "--out", out, "--no-plots"], capture_output=True,
+                       text=True, timeout=300)
     print(p.stdout, p.stderr, sep="\n")
     if p.returncode != 0:
         fail(f"sweep --vary exit status {p.returncode}")
     with open(os.path.join(out, "sweep.csv"), newline="") as f:
         rows = {r["case"]: r for r in csv.DictReader(f)}
-    want = {"v20mps_h0.1mm_rake_angle_deg-5": "-5", "v20mps_h0.1mm_rake_angle_deg15": "15"}
+    want = {"v20mps_h0.1mm_rake_angle_deg-5_friction0.35": "-5", "v20mps_h0.1mm_rake_angle_deg15_friction0.35": "15"}
     if {k: r["cutting.rake_angle_deg"] for k, r in rows.items()} != want:
         fail(f"sweep --vary cases: {list(rows)}")
+    if {r["cutting.friction"] for r in rows.values()} != {"0.35"}:
+        fail("sweep --vary: the second key's column")
     if len({r["series"] for r in rows.values()}) != 2:
         fail("sweep --vary: the two values are not two series")
-    with open(os.path.join(out, "v20mps_h0.1mm_rake_angle_deg15", "summary.json")) as f:
+    with open(os.path.join(out, "v20mps_h0.1mm_rake_angle_deg15_friction0.35", "summary.json")) as f:
         if json.load(f)["cutting"]["rake_angle_deg"] != 15:
             fail("the varied rake angle did not reach the run")
     fc = {v: float(rows[k]["mean_cutting_force_N_per_mm"]) for k, v in want.items()}
@@ -157,7 +161,12 @@ def check_vary(binary, case, scratch):
     for args, words in ((["--vary", "cutting.rake_angle_deg=0,50"], ["--vary cutting.rake_angle_deg", "50", "(-45, 45)"]),
                         (["--vary", "cutting.rake_angle_deg"], ["KEY=V1,V2"]),
                         (["--vary", "cutting.friction=0.2,0.2"], ["given twice"]),
-                        (["--vary", "cutting.cutting_speed=10,20"], ["--speeds"])):
+                        (["--vary", "cutting.cutting_speed=10,20"], ["--speeds"]),
+                        (["--vary", "cutting.friction=0.2", "--vary", "cutting.friction=0.3"], ["varied twice"]),
+                        # each value reads alone, one combination leaves no tool wedge
+                        (["--vary", "cutting.rake_angle_deg=0,40", "--vary", "cutting.clearance_angle_deg=10,41"],
+                         ["--vary: the combination cutting.rake_angle_deg=40, cutting.clearance_angle_deg=41",
+                          "rake + clearance < 80"])):
         p = subprocess.run([binary, "sweep", case, "--speeds", "20", "--out", out + "_bad", *args], capture_output=True,
                            text=True, timeout=60)
         if p.returncode != 2 or not all(w in p.stderr for w in words) or os.path.exists(out + "_bad"):
