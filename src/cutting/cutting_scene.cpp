@@ -16,19 +16,22 @@ namespace {
 constexpr double kShortCutWindowStart = 0.6;
 }  // namespace
 
-// The chip needs about three uncut chip thicknesses of travel to form.
+// The chip needs about three uncut chip thicknesses of travel to form, from where the tool meets the workpiece.
 double steady_window_start_travel(const CuttingParameters& c) {
   return std::max(c.steady_start_fraction * c.cut_length,
-                  std::min(kEntryTravelT0 * c.uncut_chip_thickness, kShortCutWindowStart * c.cut_length));
+                  std::min(tool_engagement_travel(c) + kEntryTravelT0 * c.uncut_chip_thickness,
+                           kShortCutWindowStart * c.cut_length));
 }
 
 std::string steady_window_rule_text() {
-  return fmt::format("from max(steady_start_fraction * cut_length, min({:g} t0, {:g} cut_length)) to the end",
+  return fmt::format("from max(steady_start_fraction * cut_length, min(e + {:g} t0, {:g} cut_length)) to the end, e the "
+                     "travel before the edge meets the workpiece (0 unless the edge radius exceeds t0)",
                      kEntryTravelT0, kShortCutWindowStart);
 }
 
 std::string steady_window_warning(const CuttingParameters& c) {
-  const double formed = kEntryTravelT0 * c.uncut_chip_thickness;
+  const double engagement = tool_engagement_travel(c);
+  const double formed = engagement + kEntryTravelT0 * c.uncut_chip_thickness;
   const double start = steady_window_start_travel(c);
   // Half the window after the chip has formed: L - formed >= (L - start) / 2.
   if (c.cut_length - formed >= 0.5 * (c.cut_length - start)) return "";
@@ -36,11 +39,15 @@ std::string steady_window_warning(const CuttingParameters& c) {
   // L - formed >= (1 - q) L / 2 gives the shortest steady cut.
   const double q = std::max(c.steady_start_fraction, kShortCutWindowStart);
   const double needed = formed / (0.5 + 0.5 * q);
+  const std::string edge =
+      engagement > 0.0 ? fmt::format(" after the edge (radius {:.3g} m) meets the workpiece at {:.3g} m of travel",
+                                     c.edge_radius, engagement)
+                       : std::string();
   return fmt::format(
       "cutting.cut_length = {:.3g} m is too short: less than half of the force window ({:.3g} to {:.3g} m of travel) "
-      "lies beyond the {:g} t0 = {:.3g} m the chip needs to form, so the mean forces and the chip are mostly those of "
-      "the entry transient; a steady mean needs cut_length >= {:.3g} m",
-      c.cut_length, start, c.cut_length, kEntryTravelT0, formed, needed);
+      "lies beyond the {:.3g} m the chip needs to form ({:g} t0{}), so the mean forces and the chip are mostly those "
+      "of the entry transient; a steady mean needs cut_length >= {:.3g} m",
+      c.cut_length, start, c.cut_length, formed, kEntryTravelT0, edge, needed);
 }
 
 double cutting_cell_size(const CuttingParameters& c) {
@@ -78,6 +85,15 @@ Scene build_cutting_scene(const CuttingParameters& c, const MaterialParameters& 
   const ToolSize tool = tool_size(c);
   if (const ToolSizeProblem problem = tool_size_problem(c, tool); !problem.message.empty())
     throw CuttingKeyError(problem.key, "cutting tool: " + problem.message);
+  // An edge radius above t0 meets the workpiece only after some travel: a cut shorter than that never cuts (it ran
+  // to "complete" with zero forces).
+  if (const double engagement = tool_engagement_travel(c); c.cut_length <= engagement + h)
+    throw CuttingKeyError("cut_length",
+                          fmt::format("cutting.cut_length = {:.3g} m: the edge (radius {:.3g} m, above the uncut chip "
+                                      "thickness {:.3g} m) meets the workpiece only after {:.3g} m of travel, so the "
+                                      "tool would not cut; give at least {:.3g} m (the chip then needs {:g} t0 more "
+                                      "to form)",
+                                      c.cut_length, c.edge_radius, t0, engagement, engagement + h, kEntryTravelT0));
   const double chip_room = c.chip_room > 0.0 ? c.chip_room : std::max(0.6 * c.cut_length + 2.0 * t0, 5.0 * t0);
 
   Scene s;

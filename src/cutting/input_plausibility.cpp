@@ -85,6 +85,16 @@ std::vector<std::string> input_plausibility_warnings(const CuttingParameters& c,
                               "G_f, used only with damage = true and fracture_transition_strain_rate > 0",
                               material_key(m, "fracture_energy_brittle"), m.fracture_energy_brittle));
   check_temperature(out, "cutting.initial_temperature", c.initial_temperature, b);
+  if (m.model == MaterialModel::JohnsonCook && m.melting_temperature > m.room_temperature) {
+    const double homologous = (c.initial_temperature - m.room_temperature) / (m.melting_temperature - m.room_temperature);
+    if (homologous >= b.max_initial_homologous_temperature)
+      out.push_back(fmt::format(
+          "cutting.initial_temperature = {:g} K is {:.0f} % of the way from the material's room to its melting "
+          "temperature ({:g}-{:g} K): the Johnson-Cook flow stress starts at {:.2g} of its room-temperature value "
+          "(1 - T*^m), a range no Johnson-Cook set is fitted to; is it meant?",
+          c.initial_temperature, 100.0 * homologous, m.room_temperature, m.melting_temperature,
+          homologous < 1.0 ? 1.0 - std::pow(homologous, m.jc_m) : 0.0));
+  }
   if (c.tool_heat_transfer_coefficient > 0.0)
     check_temperature(out, "cutting.tool_temperature", c.tool_temperature, b);
   else if (c.tool_temperature != c.initial_temperature)

@@ -36,6 +36,9 @@ struct MetalPlausibility {
   // Below: a temperature in degrees Celsius? (Room temperature in degrees C is 20-25; cryogenic machining with
   // liquid nitrogen, 77 K, is real practice and passes.)
   double min_temperature_K = 60.0;
+  // A workpiece that starts this close to melting, T* = (T0 - T_room) / (T_melt - T_room), has almost no strength
+  // (Johnson-Cook: the flow stress times 1 - T*^m): a Johnson-Cook set is not fitted there.
+  double max_initial_homologous_temperature = 0.75;
 };
 
 std::vector<std::string> input_plausibility_warnings(const CuttingParameters& c, const MaterialParameters& workpiece,

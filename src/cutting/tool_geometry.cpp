@@ -170,9 +170,9 @@ ToolSizeProblem tool_size_problem(const CuttingParameters& c, const ToolSize& si
   return {};
 }
 
-RigidBodySpec make_cutting_tool(const CuttingParameters& c, const ToolPlacement& where, const ToolSize& size) {
-  if (const ToolSizeProblem problem = tool_size_problem(c, size); !problem.message.empty())
-    throw std::invalid_argument("cutting tool: " + problem.message);
+namespace {
+// The tool's core polygon (to be grown by the edge radius) in its place.
+std::vector<Vec2> placed_core(const CuttingParameters& c, const ToolPlacement& where, const ToolSize& size) {
   const double r = c.edge_radius;
   std::vector<Vec2> core = rounding_core(sharp_wedge(c, size), r);
   // Place it: the edge centre core[0] sits r above the machined surface (the lowest point of the arc on it), its
@@ -186,6 +186,23 @@ RigidBodySpec make_cutting_tool(const CuttingParameters& c, const ToolPlacement&
   const double leftmost = leftmost_x_between(core, r, where.machined_surface_y, where.uncut_surface_y);
   if (leftmost < where.leading_x - 1e-9 * std::max(size.length, size.height))
     for (Vec2& p : core) p.x() += where.leading_x - leftmost;
+  return core;
+}
+}  // namespace
+
+double tool_engagement_travel(const CuttingParameters& c) {
+  const ToolSize size = tool_size(c);
+  if (!tool_size_problem(c, size).message.empty()) return 0.0;  // not a tool: reported at its key
+  const ToolPlacement where{0.0, c.uncut_chip_thickness, 0.0};
+  const std::vector<Vec2> core = placed_core(c, where, size);
+  return std::max(0.0, leftmost_x_between(core, c.edge_radius, where.machined_surface_y, where.uncut_surface_y));
+}
+
+RigidBodySpec make_cutting_tool(const CuttingParameters& c, const ToolPlacement& where, const ToolSize& size) {
+  if (const ToolSizeProblem problem = tool_size_problem(c, size); !problem.message.empty())
+    throw std::invalid_argument("cutting tool: " + problem.message);
+  const double r = c.edge_radius;
+  const std::vector<Vec2> core = placed_core(c, where, size);
   RigidBodySpec tool;
   tool.name = "tool";
   tool.polygon.vertices = core;

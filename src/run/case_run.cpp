@@ -194,7 +194,7 @@ int CaseRun::finish() {
   ended_ = true;
   if (options_.progress) progress_->finish(status_);
   const double wall_s = wall_before_s_ + session_wall_s();
-  std::string energy_warning;
+  std::string energy_warning, drift_warning, forces_line;
   try {
     nlohmann::json sections = to_json(summarize(sim_, cutting_, status_, wall_s, message_, threads_));
     energy_warning = sections["energy_balance"].value("warning", "");
@@ -202,6 +202,15 @@ int CaseRun::finish() {
     if (!last_checkpoint_.empty()) sections["last_checkpoint"] = "checkpoints/" + last_checkpoint_;
     if (!resumed_from_.empty()) sections["resumed_from"] = "checkpoints/" + resumed_from_;
     if (out_) out_->finish(sections);
+    // A cut's result on the console too (the outputs add the cut's sections): its mean forces, and whether they
+    // had settled.
+    if (sections.contains("steady_window") && sections["steady_window"].contains("drift"))
+      drift_warning = sections["steady_window"]["drift"].value("warning", "");
+    if (sections.contains("mean_cutting_force_N_per_mm") && sections["mean_cutting_force_N_per_mm"].is_number() &&
+        sections["mean_thrust_force_N_per_mm"].is_number())
+      forces_line = fmt::format("mean forces over the steady window: Fc {:.4g} N/mm, Ft {:.4g} N/mm (per mm of width)\n",
+                                sections["mean_cutting_force_N_per_mm"].get<double>(),
+                                sections["mean_thrust_force_N_per_mm"].get<double>());
     // Through the struct, so that what is written is what the readers read.
     write_summary(root_ / "summary.json", summary_from_json(sections));
   } catch (const std::exception& e) {
@@ -213,6 +222,8 @@ int CaseRun::finish() {
     std::cerr << (exit_code_ == kExitInterrupted ? "" : exit_code_ == kExitComplete ? "warning: " : "error: ")
               << message_ << "\n";
   if (exit_code_ == kExitComplete && !energy_warning.empty()) std::cerr << "warning: " << energy_warning << "\n";
+  if (exit_code_ == kExitComplete && !drift_warning.empty()) std::cerr << "warning: " << drift_warning << "\n";
+  std::cerr << forces_line;
   std::cerr << fmt::format(
       "{}: {} particles, {} steps, {:.3g} s simulated in {:.1f} s wall ({:.3g} particle-steps/s); results in {}\n",
       status_, sim_.particles().size(), sim_.step_count(), sim_.time(), wall_s,

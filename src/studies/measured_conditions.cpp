@@ -13,6 +13,7 @@
 #include "analysis/chip_analysis.hpp"
 #include "cutting/cutting_parameters.hpp"
 #include "cutting/cutting_resolution.hpp"
+#include "cutting/tool_geometry.hpp"
 #include "io/edit_distance.hpp"
 #include "io/input_error.hpp"
 #include "io/material_library.hpp"
@@ -306,8 +307,14 @@ std::string condition_case_text(const CuttingCondition& c, const ConditionRunSet
   const double cell = o.quick ? 0.25 * h
                               : validation_cell_size_m(h, r_n, cells_per_feed, cells_per_edge_radius, l_th,
                                                        o.cells_per_thermal_length);
-  // quick: four cells of tool travel (pipeline check, numbers not meaningful).
-  const double cut = o.quick ? 4.0 * cell : validation_cut_length_m(h, r_n);
+  // quick: four cells of tool travel (pipeline check, numbers not meaningful) after the tool meets the workpiece (an
+  // edge radius above h meets it late: at h = 0.01 mm, r_n = 39.8 um, the quick cut never touched it).
+  CuttingParameters tool;
+  tool.uncut_chip_thickness = h;
+  tool.edge_radius = r_n;
+  if (c.rake_deg) tool.rake_angle_deg = *c.rake_deg;
+  if (c.clearance_deg) tool.clearance_angle_deg = *c.clearance_deg;
+  const double cut = o.quick ? 4.0 * cell + tool_engagement_travel(tool) : validation_cut_length_m(h, r_n);
   const double height = validation_workpiece_height_m(h, r_n);
   std::string s;
   s += fmt::format("title = \"{} {}: V = {:g} m/s ({:g} m/min), h = {:g} mm\"\n", o.purpose, c.id, c.speed_m_per_s,

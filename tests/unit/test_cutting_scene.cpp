@@ -76,6 +76,7 @@ TEST(CuttingScene, AutomaticToolFitsEveryAcceptedAngleAndRadius) {
         c.rake_angle_deg = rake;
         c.clearance_angle_deg = clearance;
         c.edge_radius = radius_t0 * c.uncut_chip_thickness;
+        c.cut_length += tool_engagement_travel(c);  // a large radius meets the workpiece late: the cut must reach it
         const ToolSize size = tool_size(c);
         EXPECT_EQ(tool_size_problem(c, size).message, "");
         Scene s;
@@ -191,6 +192,38 @@ TEST(CuttingScene, ShortCutWhoseForceWindowPrecedesTheFormedChipIsFlagged) {
   c.cut_length = 1e-3;  // the window starts at 0.4 mm, after the chip has formed
   EXPECT_TRUE(steady_window_warning(c).empty());
   EXPECT_DOUBLE_EQ(steady_window_start_travel(c), 0.4e-3);
+}
+
+// An edge radius r > t0 meets the workpiece after e = r - sqrt(r^2 - (r - t0)^2) of travel (0.2 mm at r = 0.5 mm,
+// t0 = 0.1 mm): a cut no longer than that is refused at cut_length (a 0.9 mm edge over 0.15 mm ran to "complete" with
+// zero forces), and the force window and its warning count e in. r <= t0 meets it at once; the rake does not matter.
+TEST(CuttingScene, ToolThatMeetsTheWorkpieceLateNeedsTheTravel) {
+  CuttingParameters c;
+  c.uncut_chip_thickness = 0.1e-3;
+  c.edge_radius = 0.5e-3;
+  EXPECT_NEAR(tool_engagement_travel(c), 0.5e-3 - std::sqrt(0.25e-6 - 0.16e-6), 1e-12);
+  c.cut_length = 1e-3;  // window from max(0.4 mm, min(0.2 + 0.3 mm, 0.6 mm))
+  EXPECT_NEAR(steady_window_start_travel(c), 0.5e-3, 1e-12);
+  c.cut_length = 0.6e-3;  // window 0.36-0.6 mm: 0.1 mm of it after the 0.5 mm the chip needs
+  EXPECT_NE(steady_window_warning(c).find("meets the workpiece at 0.0002 m"), std::string::npos)
+      << steady_window_warning(c);
+  MaterialParameters m;
+  m.name = "ti";
+  c.cut_length = 0.15e-3;
+  try {
+    build_cutting_scene(c, m);
+    ADD_FAILURE() << "a tool that never reaches the workpiece was accepted";
+  } catch (const CuttingKeyError& e) {
+    EXPECT_EQ(e.key, "cut_length");
+    EXPECT_NE(std::string(e.what()).find("meets the workpiece only after 0.0002 m"), std::string::npos) << e.what();
+  }
+  c.edge_radius = 0.1e-3;
+  EXPECT_EQ(tool_engagement_travel(c), 0.0);
+  c.edge_radius = 0.2e-3;
+  const double at_rake_0 = tool_engagement_travel(c);
+  EXPECT_NEAR(at_rake_0, 0.2e-3 - std::sqrt(0.04e-6 - 0.01e-6), 1e-12);
+  c.rake_angle_deg = -20.0;  // the face leans over the edge above the uncut surface: the arc meets it first all the same
+  EXPECT_NEAR(tool_engagement_travel(c), at_rake_0, 1e-12);
 }
 
 }  // namespace

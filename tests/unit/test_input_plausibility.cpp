@@ -131,6 +131,19 @@ TEST(InputPlausibility, TemperaturesInCelsiusAreFlagged) {
   expect_one_warning(input_plausibility_warnings(cut, m), {"cutting.tool_temperature = 25 K"});
 }
 
+// A workpiece that starts near melting has almost no strength (1850 K: Fc 3.6 N/mm, a "continuous" chip); a
+// preheated one (hot machining, 600 K) is no slip.
+TEST(InputPlausibility, AWorkpieceStartingNearItsMeltingTemperatureIsNamed) {
+  const MaterialParameters m = library_set("ti64-cutting");
+  CuttingParameters cut;
+  cut.initial_temperature = 1850.0;
+  cut.tool_temperature = 1850.0;
+  expect_one_warning(input_plausibility_warnings(cut, m),
+                     {"cutting.initial_temperature = 1850 K", "98 % of the way", "melting"});
+  cut.initial_temperature = cut.tool_temperature = 600.0;
+  EXPECT_TRUE(input_plausibility_warnings(cut, m).empty());
+}
+
 TEST(InputPlausibility, ParametersThatActOnNothingAreNamed) {
   const MaterialParameters m = library_set("ti64-cutting");
   CuttingParameters cut;
