@@ -37,6 +37,9 @@ int calibrate(const CalibrateOptions& o) {
     // A directory that holds no calibration.toml is not a calibration's: neither written into nor (--force)
     // deleted, so that a mistyped --out cannot wipe or litter unrelated files.
     std::error_code ec;
+    if (fs::exists(out) && !fs::is_directory(out))
+      throw InputError(fmt::format("--out {}: a file of that name exists, not a directory; choose another --out",
+                                   out.string()));
     if (fs::exists(out) && !fs::is_empty(out, ec) && !fs::exists(out / "calibration.toml"))
       throw InputError(fmt::format("--out {}: the directory is not empty and holds no calibration.toml, so it is not "
                                    "a calibration's result directory; refusing to {} it. Choose another --out",

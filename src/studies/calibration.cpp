@@ -9,6 +9,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -16,6 +17,7 @@
 #include <nlohmann/json.hpp>
 #include <toml++/toml.h>
 
+#include "cutting/cutting_parameters.hpp"
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
 #include "studies/task_farm.hpp"
@@ -395,10 +397,15 @@ void Calibrator::write_results(const Evaluation& best, const std::vector<Conditi
       "the width of cut of the measurement file's rows (column width_mm) or, where it gives none, an ASSUMED b = {:g} mm",
       c_.weight_fc, c_.weight_ft, c_.weight_chip_thickness, c_.width_of_cut_mm);
   const bool global_stage = c_.global_algorithm != "none" && c_.global_evaluations > 0;
+  const bool local_stage = c_.local_algorithm != "none" && c_.evaluations > c_.global_evaluations;
   const std::string budget_text =
-      global_stage ? fmt::format("{} evaluations ({} global {}, then {}), seed {}", c_.evaluations,
-                                 c_.global_evaluations, c_.global_algorithm, c_.local_algorithm, c_.seed)
-                   : fmt::format("{} evaluations ({} only), seed {}", c_.evaluations, c_.local_algorithm, c_.seed);
+      !global_stage ? fmt::format("{} evaluations ({} only), seed {}", c_.evaluations, c_.local_algorithm, c_.seed)
+      : local_stage ? fmt::format("{} evaluations ({} global {}, then {}), seed {}", c_.evaluations,
+                                  c_.global_evaluations, c_.global_algorithm, c_.local_algorithm, c_.seed)
+                    : fmt::format("{} evaluations, all global {} (no local stage: the global stage's budget, "
+                                  "min(20, evaluations) unless global_evaluations says otherwise, took them all), "
+                                  "seed {}",
+                                  c_.evaluations, c_.global_algorithm, c_.seed);
   std::string own_resolutions;  // the conditions with their own cells across t0
   for (const auto* list : {&c_.training, &c_.held_back})
     for (const MeasuredForces& m : *list)
@@ -420,11 +427,20 @@ void Calibrator::write_results(const Evaluation& best, const std::vector<Conditi
       if (c_.parameters[i].name == "friction") return i;
     return std::nullopt;
   }();
+  // What the set was fitted with besides the material: a set fitted at one friction is another set at another.
+  const CuttingParameters preset;
+  const std::string process_text =
+      (friction_index ? std::string("Coulomb friction fitted (below)")
+                      : fmt::format("Coulomb friction {} fixed ({})", c_.runs.friction, c_.runs.friction_note)) +
+      fmt::format("; tool: each row's edge_radius_um, and its rake_deg / clearance_deg where the measurement file "
+                  "gives them, else rake {:g} deg and clearance {:g} deg (the preset's, ASSUMED)",
+                  preset.rake_angle_deg, preset.clearance_angle_deg);
   write_file_atomically(out_ / "best_material.toml", [&](std::ostream& s) {
     s << "# Calibrated by `mpmcut calibrate " << c_.file.string() << "` on " << date << ".\n";
     s << "# Data: " << c_.measurements_source << "; training conditions (h, vc): " << training_list << ".\n";
     s << "# Objective: " << objective_text << "; value at this set " << fmt::format("{:.4g}", best.objective) << ".\n";
     s << "# Budget: " << budget_text << "; runs at " << resolution << ".\n";
+    s << "# Process: " << process_text << ".\n";
     if (friction_index)
       s << fmt::format("# Tool friction (a [cutting] key, not a material key): friction = {}\n",
                        best.values[*friction_index]);
@@ -479,12 +495,14 @@ void Calibrator::write_results(const Evaluation& best, const std::vector<Conditi
       << kFailedRunError << " in each of its quantities; a measured chip thickness that the chip analysis could not "
          "give, as "
       << kMissingChipThicknessError << ".\n\n";
-    s << fmt::format("- training ({} conditions): **{:.4g}** at the best set\n", c_.training.size(), best.objective);
+    const auto conditions = [](std::size_t n) { return fmt::format("{} condition{}", n, n == 1 ? "" : "s"); };
+    s << fmt::format("- training ({}): **{:.4g}** at the best set\n", conditions(c_.training.size()), best.objective);
     if (!c_.held_back.empty())
-      s << fmt::format("- held back ({} conditions, not used by the optimizer): **{:.4g}**{}\n", c_.held_back.size(),
+      s << fmt::format("- held back ({}, not used by the optimizer): **{:.4g}**{}\n", conditions(c_.held_back.size()),
                        held_objective, held_back_complete ? "" : " (some runs did not complete)");
     s << "\n## Budget\n\n" << budget_text << fmt::format("; {} evaluations in this directory. Runs at {}.\n\n",
                                                          sequence_.size(), resolution);
+    s << "Process: " << process_text << ".\n\n";
     s << "## Errors at the best set: training and held back\n\n" << table.markdown() << "\n";
     s << "Error % = (simulated − measured) / measured; measured N/mm = measured N / b with b the row's width_mm "
       << "where the data file gives it, else b = " << c_.width_of_cut_mm << " mm ASSUMED.\n\n";
@@ -541,7 +559,11 @@ int Calibrator::run() {
     std::cout << "mpmcut calibrate: the held-back conditions at the best set\n" << std::flush;
     bool completed = true;
     held_back = run_conditions(c_.held_back, best.values, out_ / "best_held_back", completed);
-    if (!completed) return 130;
+    if (!completed) {
+      std::cerr << "mpmcut calibrate: interrupted in the held-back runs; the same command resumes them (the "
+                   "evaluations are not run again)\n";
+      return 130;
+    }
     Evaluation e = best;
     e.conditions = held_back;
     e.objective = objective(c_.held_back, held_back);
@@ -556,14 +578,53 @@ int Calibrator::run() {
   return held_back_complete ? 0 : 1;
 }
 
-// Whether two configuration texts hold the same keys and values: comments, blank lines, the order of keys and the
-// spelling of numbers (1e-3, 0.001) do not change the problem a calibration solves.
-bool same_configuration(const std::string& a, const std::string& b) {
-  try {
-    return toml::parse(a) == toml::parse(b);
-  } catch (const toml::parse_error&) {
-    return a == b;
+// The keys (dotted) whose values differ between two tables, or that one of them lacks.
+void differing_keys(const toml::table& a, const toml::table& b, const std::string& prefix,
+                    std::vector<std::string>& out) {
+  std::set<std::string> keys;
+  for (const auto& [k, v] : a) keys.insert(std::string(k.str()));
+  for (const auto& [k, v] : b) keys.insert(std::string(k.str()));
+  for (const std::string& k : keys) {
+    const toml::node* x = a.get(k);
+    const toml::node* y = b.get(k);
+    if (x && y && x->is_table() && y->is_table())
+      differing_keys(*x->as_table(), *y->as_table(), prefix + k + ".", out);
+    else if (!x || !y || toml::node_view<const toml::node>(x) != toml::node_view<const toml::node>(y))
+      out.push_back(prefix + k);
   }
+}
+
+// Which keys and values differ between two configuration texts (none: the same problem): comments, blank lines,
+// the order of keys and the spelling of numbers (1e-3, 0.001) do not change the problem a calibration solves.
+std::vector<std::string> configuration_differences(const std::string& a, const std::string& b) {
+  std::vector<std::string> out;
+  try {
+    differing_keys(toml::parse(a), toml::parse(b), "", out);
+  } catch (const toml::parse_error&) {
+    if (a != b) out.push_back("(the text)");
+  }
+  return out;
+}
+
+// The measured rows a calibration uses, as text: an edited measurement file changes the objective of every cached
+// evaluation, which a rerun would otherwise report as if computed from the new data.
+std::string measurements_text(const CalibrationConfig& c) {
+  std::string s = "# the measured rows of this calibration, as read from its measurement file\n";
+  for (const auto& [list, rows] : {std::pair{"training", &c.training}, std::pair{"held_back", &c.held_back}})
+    for (const MeasuredForces& m : *rows)
+      s += fmt::format("{} line {}: h {} mm, vc {} m/min, r_n {} um, Fc {} [{}, {}] N, Ff {} [{}, {}] N, chip {} um, "
+                       "width {} mm, rake {} deg, clearance {} deg\n",
+                       list, m.line, m.h_mm, m.vc_m_per_min, m.edge_radius_um, m.fc_N, m.fc_min_N, m.fc_max_N, m.ff_N,
+                       m.ff_min_N, m.ff_max_N, m.chip_thickness_um.value_or(NAN), m.width_mm.value_or(NAN),
+                       m.rake_deg.value_or(NAN), m.clearance_deg.value_or(NAN));
+  return s;
+}
+
+std::string read_text(const fs::path& file) {
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
 }
 
 }  // namespace
@@ -571,22 +632,42 @@ bool same_configuration(const std::string& a, const std::string& b) {
 int run_calibration(const CalibrationConfig& config, const fs::path& out, int jobs) {
   // A directory holds one calibration: resuming with a changed configuration would replay a cache that
   // belongs to another problem.
-  std::ifstream in(config.file);
-  std::stringstream text;
-  text << in.rdbuf();
+  const std::string text = read_text(config.file);
   const fs::path copy = out / "calibration.toml";
   if (fs::exists(copy)) {
-    std::ifstream old(copy);
-    std::stringstream old_text;
-    old_text << old.rdbuf();
-    if (!same_configuration(old_text.str(), text.str()))
-      throw InputError(fmt::format("{}: holds a calibration of a different configuration than {} (differences "
-                                   "would make its cache of evaluations wrong); use another --out, or --force to "
-                                   "start this one afresh",
-                                   copy.string(), config.file.string()));
+    const std::vector<std::string> changed = configuration_differences(read_text(copy), text);
+    if (!changed.empty()) {
+      std::string keys;
+      for (const std::string& k : changed) keys += (keys.empty() ? "" : ", ") + k;
+      throw InputError(fmt::format("{}: holds a calibration of a different configuration than {} (changed: {}; "
+                                   "differences would make its cache of evaluations wrong); use another --out, or "
+                                   "--force to start this one afresh",
+                                   copy.string(), config.file.string(), keys));
+    }
+  }
+  // The measured rows too (a directory of an earlier version has no record of them: it gets one now).
+  const fs::path rows = out / "measurements_used.txt";
+  const std::string rows_text = measurements_text(config);
+  if (fs::exists(rows)) {
+    const std::string old_rows = read_text(rows);
+    if (old_rows != rows_text) {
+      std::istringstream was(old_rows), is(rows_text);
+      std::string a, b;
+      for (;;) {
+        const bool more_a = static_cast<bool>(std::getline(was, a)), more_b = static_cast<bool>(std::getline(is, b));
+        if (!more_a) a = "(no row)";
+        if (!more_b) b = "(no row)";
+        if (!more_a || !more_b || a != b) break;
+      }
+      throw InputError(fmt::format("{}: the measured rows of this calibration changed since its evaluations were "
+                                   "made (was \"{}\", now \"{}\"): their objectives would be those of the old data; "
+                                   "use another --out, or --force to start afresh",
+                                   config.measurements_source, a, b));
+    }
   }
   fs::create_directories(out);
-  write_file_atomically(copy, [&](std::ostream& s) { s << text.str(); });
+  write_file_atomically(copy, [&](std::ostream& s) { s << text; });
+  write_file_atomically(rows, [&](std::ostream& s) { s << rows_text; });
   return Calibrator(config, out, jobs).run();
 }
 

@@ -100,6 +100,8 @@ CalibrationConfig read_calibration_config(const fs::path& file, std::string_view
     c.runs.friction = r->number("friction", c.runs.friction);
     r->check("friction", c.runs.friction >= 0.0 && c.runs.friction <= 2.0, "a Coulomb coefficient in [0, 2]",
              c.runs.friction);
+    // The case files say where a fixed friction came from (it said "preset default" for a value given here).
+    if (r->has("friction")) c.runs.friction_note = "the calibration's [runs] friction";
     // The contact of every run, as `validate --contact-detection` (empty: the preset's node detection, so
     // that existing configurations write the same case files).
     c.runs.contact_detection = r->string("contact_detection", "");
@@ -139,8 +141,10 @@ CalibrationConfig read_calibration_config(const fs::path& file, std::string_view
     const double base_value = friction ? c.runs.friction : keys.at(q.name);
     q.start = p.number("start", base_value);
     if (!(q.start >= q.min && q.start <= q.max)) {
-      const std::string what = p.has("start") ? "" : fmt::format(" (the start value is {}'s {} = {})",
-                                                                 c.base_material, q.name, base_value);
+      const std::string what =
+          p.has("start")  ? ""
+          : friction ? fmt::format(" (the start value is [runs] friction = {})", base_value)
+                     : fmt::format(" (the start value is {}'s {} = {})", c.base_material, q.name, base_value);
       p.fail(p.has("start") ? "start" : "min",
              fmt::format("the bounds [{}, {}] exclude the start value {}{}", q.min, q.max, q.start, what));
     }
@@ -243,6 +247,16 @@ CalibrationConfig read_calibration_config(const fs::path& file, std::string_view
     o->check("width_of_cut_mm", c.width_of_cut_mm > 0.0, "a positive width (mm)", c.width_of_cut_mm);
     o->reject_unknown_keys();
   }
+  // Every condition must have a measured quantity the objective weighs: a row without chip thickness, with only
+  // weight_chip_thickness > 0, made the objective 0/0 (NaN, reported as the best value).
+  for (const auto& [list, conditions] : {std::pair{"training", &c.training}, std::pair{"held_back", &c.held_back}})
+    for (const MeasuredForces& m : *conditions)
+      if (c.weight_fc + c.weight_ft + (m.chip_thickness_um ? c.weight_chip_thickness : 0.0) <= 0.0)
+        data.fail(list, fmt::format("the condition h_mm = {}, vc_m_per_min = {} (line {} of {}) has no measured "
+                                    "quantity that the objective weighs: weight_Fc = {} and weight_Ft = {}, and the "
+                                    "row gives no chip_thickness_um; weigh a force, or pick a row with a chip "
+                                    "thickness",
+                                    m.h_mm, m.vc_m_per_min, m.line, c.measurements_source, c.weight_fc, c.weight_ft));
 
   // The optimizer.
   if (auto o = t.optional_table("optimizer")) {
@@ -254,7 +268,9 @@ CalibrationConfig read_calibration_config(const fs::path& file, std::string_view
     c.global_evaluations = static_cast<int>(o->integer("global_evaluations", std::min(c.global_evaluations, c.evaluations)));
     o->check("global_evaluations", c.global_evaluations >= 0 && c.global_evaluations <= c.evaluations,
              fmt::format("an integer from 0 to evaluations ({})", c.evaluations), c.global_evaluations);
-    c.seed = static_cast<unsigned>(o->integer("seed", c.seed));
+    const long long seed = o->integer("seed", c.seed);
+    o->check("seed", seed >= 0 && seed <= 4294967295LL, "an integer from 0 to 4294967295", seed);
+    c.seed = static_cast<unsigned>(seed);
     if (c.global_algorithm != "none") algorithm(*o, "global", c.global_algorithm, "GN_");
     if (c.local_algorithm != "none") algorithm(*o, "local", c.local_algorithm, "LN_");
     if (c.global_algorithm == "none" && c.local_algorithm == "none")

@@ -76,6 +76,14 @@ GridConvergenceReport grid_convergence_report(const fs::path& sweep_csv) {
                       "finest − extrapolated (%)", "GCI fine (%)"};
   for (auto& [condition, runs] : by_condition) {
     std::sort(runs.begin(), runs.end(), [](const Run& a, const Run& b) { return a.cell_um < b.cell_um; });
+    // A merged or edited table may hold one resolution twice: name it (it stopped with "0 < h1 < h2 < h3").
+    for (std::size_t i = 1; i < runs.size(); ++i)
+      if (runs[i].cells_per_feed == runs[i - 1].cells_per_feed)
+        throw InputError(fmt::format("{}:{}: the condition V = {:g} m/s, h = {:g} mm has a complete run at "
+                                     "cells_per_feed = {} on line {} already: one run per resolution",
+                                     f.source, std::max(runs[i].row->line, runs[i - 1].row->line), condition.first,
+                                     condition.second, runs[i].cells_per_feed,
+                                     std::min(runs[i].row->line, runs[i - 1].row->line)));
     if (runs.size() < 3) continue;
     ++r.conditions;
     const Run &fine = runs[0], &medium = runs[1], &coarse = runs[2];

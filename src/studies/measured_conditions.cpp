@@ -181,7 +181,8 @@ std::vector<MeasuredForces> read_measured_forces(const DataFile& file) {
                                      file.source, r.line, force, force, force, mean, lo, hi));
     const double n = file.number(r, "n_tests");
     m.n_tests = std::isfinite(n) ? static_cast<int>(n) : 1;
-    if (const double t = file.number(r, "chip_thickness_um"); std::isfinite(t) && t > 0) m.chip_thickness_um = t;
+    // Given: positive (a 0 or a negative was dropped silently, the chip term with it).
+    m.chip_thickness_um = file.number_in(r, "chip_thickness_um", Range::open_closed(0.0, 1e5, "um"));
     m.rake_deg = file.number_in(r, "rake_deg", kRakeColumn);
     m.clearance_deg = file.number_in(r, "clearance_deg", kClearanceColumn);
     m.width_mm = file.number_in(r, "width_mm", Range::open_closed(0.0, 1000.0, "mm"));

@@ -12,7 +12,8 @@ condition, a budget of 3 evaluations: 2 of CRS2, then BOBYQA from the best point
     is evaluated again, its complete runs kept (not rerun), the other replays, and evaluations.csv comes out
     identical (deterministic for a seed);
   - a second start over a complete directory runs nothing (neither evaluations nor held-back runs), also from a copy
-    of the configuration with a comment added and a number respelt; a changed bound is refused.
+    of the configuration with a comment added and a number respelt; a changed bound is refused naming its key, and
+    so are measured rows that differ from those the evaluations were made with.
 """
 import csv
 import math
@@ -87,7 +88,7 @@ def main(binary, scratch):
     if m["name"] != "ti64-test-fit" or m["library"] != "ti64-cutting" or m["jc_A"] != float(best["jc_A_Pa"]):
         fail(f"best_material.toml: {m}")
     text = read(os.path.join(out, "best_material.toml"))
-    for word in ("Data:", "Objective:", "Budget:", "friction = ", "seed 7"):
+    for word in ("Data:", "Objective:", "Budget:", "Process:", "friction = ", "seed 7"):
         if word not in text:
             fail(f"best_material.toml has no '{word}'")
     md = read(os.path.join(out, "calibration.md"))
@@ -131,8 +132,20 @@ def main(binary, scratch):
         f.write(read(CONFIG).replace("max = 1000e6", "max = 1100e6"))
     p = subprocess.run([binary, "calibrate", changed, "--out", out, "--no-plots"], capture_output=True, text=True,
                        timeout=60)
-    if p.returncode != 2 or "different configuration" not in p.stderr:
-        fail(f"a changed bound was not refused: exit {p.returncode}, {p.stderr}")
+    if p.returncode != 2 or "different configuration" not in p.stderr or "changed: parameter" not in p.stderr:
+        fail(f"a changed bound was not refused naming its key: exit {p.returncode}, {p.stderr}")
+    # Measured rows that differ from those the evaluations were made with (an edited measurement file; here the
+    # record of the rows is edited instead): refused, naming the row (the cached objectives were of the old data).
+    rows_file = os.path.join(out, "measurements_used.txt")
+    rows_text = read(rows_file)
+    if "training line" not in rows_text or "held_back line" not in rows_text:
+        fail(f"measurements_used.txt: {rows_text}")
+    with open(rows_file, "w") as f:
+        f.write(rows_text.replace(", Fc ", ", Fc 1", 1))
+    p = subprocess.run([binary, "calibrate", CONFIG, "--out", out, "--no-plots"], capture_output=True, text=True,
+                       timeout=60)
+    if p.returncode != 2 or "measured rows of this calibration changed" not in p.stderr:
+        fail(f"changed measured rows were not refused: exit {p.returncode}, {p.stderr}")
     print("PASS")
 
 

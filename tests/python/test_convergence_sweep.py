@@ -100,6 +100,16 @@ def main(binary, scratch):
     with open(os.path.join(out, "sweep.md")) as f:
         if "## Richardson extrapolation" not in f.read():
             fail("sweep.md has no Richardson section with three resolutions")
+    # A merged table with one resolution twice: exit 2 naming the lines (it stopped with exit 4, "0 < h1 < h2 < h3").
+    merged = os.path.join(scratch, "merged")
+    os.makedirs(merged)
+    with open(os.path.join(out, "sweep.csv")) as f:
+        lines = f.readlines()
+    with open(os.path.join(merged, "sweep.csv"), "w") as f:
+        f.writelines(lines + [lines[1]])
+    p = subprocess.run([binary, "convergence", merged], capture_output=True, text=True, timeout=60)
+    if p.returncode != 2 or "one run per resolution" not in p.stderr or f"sweep.csv:{len(lines) + 1}" not in p.stderr:
+        fail(f"a resolution given twice: exit {p.returncode}, {p.stderr}")
     print("convergence sweep: OK")
 
 

@@ -243,6 +243,8 @@ TEST(MeasuredForces, FilesFromSpreadsheetsReadAndMalformedOnesAreErrorsAtTheirLi
                                                      "you mean 'width_mm'?");
   expect(head + "\n0.1,100,nan,120,30\n", "mine.csv:2: column 'Fc_mean_N': must be a finite number, got \"nan\"");
   expect(head + "\n0.1,100,,120,30\n", "mine.csv:2: column 'Fc_mean_N': a value is needed in every row");
+  // A chip thickness of 0 or below was dropped silently, and the chip term of the objective with it.
+  expect(head + ",chip_thickness_um\n0.1,100,200,120,30,0\n", "mine.csv:2: column 'chip_thickness_um': must be in (0,");
   EXPECT_EQ(error(head + ",my_notes\n0.1,100,200,120,30,lathe 2\n"), "");  // a column of notes is left alone
   EXPECT_EQ(error(head + ",notes\n0.1,100,200,120,30,lathe 2\n"), "");  // two letters from "tests", not a typo
 }
@@ -295,6 +297,31 @@ TEST(CalibrationConfig, EdgeRadiusPicksARowAmongRowsOfOneTool) {
   } catch (const InputError& err) {
     EXPECT_NE(std::string(err.what()).find("same.csv:3: the same cut as line 2"), std::string::npos) << err.what();
   }
+}
+
+// A condition whose only weighed quantity it does not measure made the objective 0/0: "best objective -nan", exit 0.
+TEST(CalibrationConfig, AConditionWithNothingTheObjectiveWeighsIsRefused) {
+  const std::string only_chip = "[objective]\nweight_Fc = 0.0\nweight_Ft = 0.0\nweight_chip_thickness = 1.0\n";
+  const std::string e = error_of("name = \"fit\"\n" + kParameter +
+                                 "[data]\ntraining = [{h_mm = 0.1, vc_m_per_min = 150.0}]\n" + only_chip);
+  EXPECT_NE(e.find("key 'data.training'"), std::string::npos) << e;
+  EXPECT_NE(e.find("vc_m_per_min = 150 (line 4"), std::string::npos) << e;
+  EXPECT_NE(e.find("gives no chip_thickness_um"), std::string::npos) << e;
+  EXPECT_EQ(error_of("name = \"fit\"\n" + kParameter + kData + only_chip), "");  // the 100 m/min row has one
+}
+
+// A fixed friction and the seed: where the friction came from reaches the case files; a negative seed is refused
+// (it wrapped round to 4294967295).
+TEST(CalibrationConfig, FixedFrictionIsNamedAndTheSeedIsInRange) {
+  const CalibrationConfig c = read_calibration_config(
+      write("friction.toml", "name = \"fit\"\n" + kParameter + kData + "[runs]\nfriction = 0.5\n"), kMeasurements);
+  EXPECT_EQ(c.runs.friction, 0.5);
+  EXPECT_EQ(c.runs.friction_note, "the calibration's [runs] friction");
+  const std::string e = error_of("name = \"fit\"\n" + kParameter + kData + "[optimizer]\nseed = -1\n");
+  EXPECT_NE(e.find("key 'optimizer.seed'"), std::string::npos) << e;
+  const std::string f = error_of("name = \"fit\"\n[[parameter]]\nname = \"friction\"\nmin = 0.4\nmax = 0.6\n" + kData +
+                                 "[runs]\nfriction = 0.7\n");
+  EXPECT_NE(f.find("the start value is [runs] friction = 0.7"), std::string::npos) << f;
 }
 
 TEST(CalibrationConfig, UnknownOptimizerAlgorithm) {
