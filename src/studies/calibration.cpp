@@ -284,7 +284,8 @@ double Calibrator::evaluate(const std::vector<double>& u) {
   for (std::size_t i = 0; i < u.size(); ++i) e.values.push_back(value_of(i, u[i]));
   std::string values;
   for (std::size_t i = 0; i < u.size(); ++i)
-    values += fmt::format("{}{} = {:.6g}", values.empty() ? "" : ", ", c_.parameters[i].name, e.values[i]);
+    values += fmt::format("{}{} = {:.6g}{}", values.empty() ? "" : ", ", c_.parameters[i].name, e.values[i],
+                          c_.parameters[i].unit.empty() ? "" : " " + c_.parameters[i].unit);
   std::cout << fmt::format("evaluation {} ({} stage): {}\n", index, stage_, values) << std::flush;
   bool completed = true;
   e.conditions = run_conditions(c_.training, e.values, out_ / "evaluations" / fmt::format("e{:04d}", index), completed);
@@ -416,7 +417,9 @@ void Calibrator::write_results(const Evaluation& best, const std::vector<Conditi
        : c_.runs.cells_per_edge_radius > 0.0
            ? fmt::format("cell = min(t0/{}, r_n/{:g})", c_.runs.cells_per_feed, c_.runs.cells_per_edge_radius)
            : fmt::format("cell = t0/{} (no edge-radius limit)", c_.runs.cells_per_feed)) +
-      (own_resolutions.empty() || c_.runs.quick ? std::string() : " with " + own_resolutions + " instead") +
+      (own_resolutions.empty() ? std::string()
+       : c_.runs.quick         ? " (the conditions' own cells_per_feed, " + own_resolutions + ", are not used by quick runs)"
+                               : " with " + own_resolutions + " instead") +
       // The contact only when chosen, so that a configuration without it reports as before.
       (c_.runs.contact_detection.empty() ? std::string()
                                          : fmt::format(", {} contact", c_.runs.contact_detection));
