@@ -219,10 +219,12 @@ CalibrationConfig read_calibration_config(const fs::path& file, std::string_view
                fmt::format("{} rows of {} match h_mm = {}, vc_m_per_min = {}{} (lines {}): name one with rake_deg, "
                            "clearance_deg and/or edge_radius_um",
                            matches, c.measurements_source, h, vc, angles, matching_lines));
-      for (const auto* list : {&c.training, &c.held_back})
+      for (const auto& [name, list] : {std::pair{"training", &c.training}, std::pair{"held_back", &c.held_back}})
         for (const MeasuredForces& r : *list)
           if (r.line == found->line)
-            s.fail("vc_m_per_min", fmt::format("the condition h_mm = {}, vc_m_per_min = {} is selected twice", h, vc));
+            s.fail("vc_m_per_min", fmt::format("the condition h_mm = {}, vc_m_per_min = {} is selected twice (it is "
+                                               "in {} already): a condition is fitted or held back, once",
+                                               h, vc, name));
       into.push_back(*found);
       if (cells_per_feed > 0) c.cells_per_feed_by_line[found->line] = cells_per_feed;
     }

@@ -148,6 +148,9 @@ TEST(CalibrationConfig, EmptyTrainingSet) {
 TEST(CalibrationConfig, ConditionNotInTheMeasurements) {
   const std::string e = error_of("name = \"fit\"\n" + kParameter + "[data]\ntraining = [{h_mm = 0.1, vc_m_per_min = 99}]\n");
   EXPECT_NE(e.find("no row with h_mm = 0.1 and vc_m_per_min = 99"), std::string::npos) << e;
+  const std::string twice = error_of("name = \"fit\"\n" + kParameter + kData +
+                                     "held_back = [{h_mm = 0.1, vc_m_per_min = 100.0}]\n");
+  EXPECT_NE(twice.find("selected twice (it is in training already)"), std::string::npos) << twice;
 }
 
 TEST(CalibrationConfig, MeasurementFileWithMissingColumnsNamesFileLineAndColumns) {
