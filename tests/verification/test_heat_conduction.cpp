@@ -64,6 +64,21 @@ TEST(HeatConduction, FixedFaceTemperatureBoundsTheSlab) {
 
 // Second order in the cell: 0.25 % at 25 cells, 0.016 % at 100 (16x for 4x finer). The reset of the face
 // node's one-sided mean made it first order (8.1 % and 2.0 %, 4x): a ratio above 8 fails that.
+// Two faces held at 400 and 300 K: the steady state is the straight line between them, up to the faces. With the
+// face nodes' one-sided means reset to the faces' values the first cell at each end stood 3/8 h |grad T| off it
+// (0.75 K here, 0.75 % of the difference).
+TEST(HeatConduction, TwoFixedFacesGiveTheLinearSteadyProfile) {
+  Scene s = heat_slab_scene(ShapeFunctionKind::UGimp, 50);
+  s.thermal.right = 300.0;
+  Simulation sim(s);
+  while (sim.time() < 1.5) sim.step();  // 1.5 L^2 / alpha: the slowest mode has decayed by e^-15
+  double worst = 0.0;
+  const auto& P = sim.particles();
+  for (std::size_t p = 0; p < P.size(); ++p)
+    worst = std::max(worst, std::abs(P.temperature[p] - (400.0 - 100.0 * P.position[p].x())));
+  EXPECT_LT(worst, 0.1) << "K off the straight line";
+}
+
 TEST(HeatConduction, ErrorFallsWithCellSize) {
   EXPECT_GT(max_error_vs_erfc(ShapeFunctionKind::UGimp, 25, 0.02),
             8.0 * max_error_vs_erfc(ShapeFunctionKind::UGimp, 100, 0.02));
