@@ -59,8 +59,15 @@ GridConvergenceReport grid_convergence_report(const fs::path& sweep_csv) {
     const DataFile::Row* row;
   };
   std::map<std::pair<double, double>, std::vector<Run>> by_condition;
+  std::vector<std::string> left_out;  // runs of a resolution that did not complete: the finest may be among them
   for (const DataFile::Row& row : f.rows) {
-    if (row.cells.at("status") != "complete") continue;
+    if (row.cells.at("status") != "complete") {
+      if (const double n = f.number(row, "cells_per_feed"); std::isfinite(n) && n > 0.0)
+        left_out.push_back(fmt::format("V = {:g} m/s, h = {:g} mm at {:g} cells across h ({})",
+                                       f.number(row, "speed_m_per_s"), f.number(row, "feed_mm"), n,
+                                       row.cells.at("status")));
+      continue;
+    }
     const double n = f.number(row, "cells_per_feed"), feed_mm = f.number(row, "feed_mm");
     if (!std::isfinite(n) || !(n > 0.0)) continue;  // a sweep at the case's own cell size
     // The cell from the feed and N exactly (cell_size_um is rounded in the table).
@@ -128,6 +135,11 @@ GridConvergenceReport grid_convergence_report(const fs::path& sweep_csv) {
           "are not in the asymptotic range and the extrapolation is indicative only: column \"p in 0.5–3\" says "
           "no there.\n\n"
        << r.table.markdown() << "\n";
+  }
+  if (!left_out.empty()) {
+    md << "Left out, not complete:";
+    for (std::size_t i = 0; i < left_out.size(); ++i) md << (i ? "; " : " ") << left_out[i];
+    md << ".\n\n";
   }
   r.markdown = md.str();
   return r;

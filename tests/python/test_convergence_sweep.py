@@ -110,6 +110,21 @@ def main(binary, scratch):
     p = subprocess.run([binary, "convergence", merged], capture_output=True, text=True, timeout=60)
     if p.returncode != 2 or "one run per resolution" not in p.stderr or f"sweep.csv:{len(lines) + 1}" not in p.stderr:
         fail(f"a resolution given twice: exit {p.returncode}, {p.stderr}")
+    # A finer run that failed is left out, and the report says so (it used the three finest complete ones silently).
+    failed = os.path.join(scratch, "failed")
+    os.makedirs(failed)
+    with open(os.path.join(out, "sweep.csv"), newline="") as f:
+        table = list(csv.DictReader(f))
+    extra = dict(table[0], status="failed", cells_per_feed="6")
+    with open(os.path.join(failed, "sweep.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(table[0]))
+        w.writeheader()
+        w.writerows(table + [extra])
+    p = subprocess.run([binary, "convergence", failed], capture_output=True, text=True, timeout=60)
+    with open(os.path.join(failed, "grid_convergence.md")) as f:
+        md = f.read()
+    if p.returncode != 0 or "Left out, not complete: V = 20 m/s, h = 0.1 mm at 6 cells across h (failed)" not in md:
+        fail(f"a failed finer run: exit {p.returncode}, {p.stderr}, {md[-400:]}")
     print("convergence sweep: OK")
 
 
