@@ -39,8 +39,9 @@ struct ToolSizeProblem {
 ToolSizeProblem tool_size_problem(const CuttingParameters& c, const ToolSize& size);
 
 // The tool's travel beyond its start (half a cell before the workpiece) before it meets the workpiece between the
-// machined and the uncut surface, m: 0 unless the edge radius exceeds t0, then r - sqrt(r^2 - (r - t0)^2) for a
-// rake >= 0 (the arc's lowest part meets the workpiece's end first). 0 for a size that is no tool.
+// machined and the uncut surface, m: 0 unless the edge radius exceeds t0, then r - sqrt(r^2 - (r - t0)^2) where the
+// arc below the uncut surface meets the workpiece's end first (at rake 0 and -20 deg alike: the rake face starts
+// above it). 0 for a size that is no tool.
 double tool_engagement_travel(const CuttingParameters& c);
 
 // The tool moving at -cutting_speed along x, its rake face facing -x, placed so that its lowest
