@@ -10,7 +10,9 @@
 #include "app/sweep_command.hpp"
 #include "app/validation_conditions.hpp"
 #include "app/validation_report.hpp"
+#include "cutting/input_plausibility.hpp"
 #include "io/atomic_file.hpp"
+#include "cutting/input_plausibility.hpp"
 #include "io/input_error.hpp"
 #include "io/scene_writer.hpp"
 #include "run/case_loading.hpp"
@@ -116,6 +118,8 @@ int run_validation(const ValidateOptions& o) {
     const auto first = std::find_if(conditions.begin(), conditions.end(), [](const Condition& c) { return c.selected; });
     (void)parse_case(first->case_text, "the case of " + first->id + " (--material-key)");
   }
+  if (const std::string w = validation::material_data_mismatch(settings, data); !w.empty())
+    std::cerr << "warning: " << w << "\n";
   if (o.list) return list_conditions(conditions, out, o);
   fs::create_directories(out / "cases");
   fs::create_directories(out / "logs");
@@ -171,6 +175,14 @@ int run_validation(const ValidateOptions& o) {
                                    : "",
                            runs.size(), conditions.size(), concurrency_text(jobs), o.threads, out.string())
             << std::flush;
+  // What every run would say at its start about the material and the data (unit slips of a --material-key or a
+  // --material-file set: in each run's log and summary.json, said once here).
+  if (!run_of.empty()) {
+    const Case first = condition_case(*run_of.front(), out / "cases" / (run_of.front()->id + ".toml"));
+    if (first.cutting)
+      for (const std::string& w : input_plausibility_warnings(*first.cutting, first.scene))
+        std::cerr << "warning: every run: " << w << "\n";
+  }
   const bool completed = run_cases(runs, jobs, true);
   for (std::size_t i = 0; i < runs.size(); ++i) {
     run_of[i]->result = read_case_result(out / run_of[i]->id, runs[i].log_file, runs[i].exit_code);

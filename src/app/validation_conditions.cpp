@@ -271,6 +271,17 @@ std::string resolution_text(const Options& o) {
 
 static bool edge_radius_names_tool(const Condition& c) { return c.measured && c.measured->edge_radius_names_tool; }
 
+std::string material_data_mismatch(const ConditionRunSettings& s, const ForceData& data) {
+  if (!data.builtin) return "";
+  const std::string material = s.material.empty() ? "ti64-cutting" : s.material;
+  // A library Ti-6Al-4V set is what the data are of; another set (a file's may inherit one) may not be.
+  if (s.material_definitions.empty() && material.starts_with("ti64")) return "";
+  return fmt::format("the built-in measurements are of Ti-6Al-4V (Klippel et al. 2024, Sutter & List 2013), and the "
+                     "runs cut the set \"{}\" ({}): unless it is a Ti-6Al-4V set, compare it with its own "
+                     "measurements (--measurements FILE, docs/results.md)",
+                     material, s.material_note);
+}
+
 // The tool of a condition as the measurements give it: its angles, and its edge radius where the file's tools differ
 // in it ("" where they give none).
 std::string tool_text(const Condition& c, bool with_edge_radius) {

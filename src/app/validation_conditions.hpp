@@ -110,6 +110,9 @@ std::string resolution_text(const Options& o);
 
 bool same_h(double a, double b);
 bool same_speed(double a, double b);
+// A warning when the built-in Ti-6Al-4V data are compared with a set that is not a library Ti-6Al-4V one ("" else).
+std::string material_data_mismatch(const ConditionRunSettings& s, const ForceData& data);
+
 // Conditions cut with the same tool (as far as the measurements give it: angles, and the edge radius where the
 // file's tools differ in it).
 bool same_tool(const Condition& a, const Condition& b);

@@ -576,6 +576,8 @@ void write_markdown(const ReportParts& r) {
   write_file_atomically(out / "validation.md", [&](std::ostream& s) {
     s << (data.builtin ? std::string("# Validation against published Ti-6Al-4V orthogonal-cutting measurements\n\n")
                        : "# Validation against the measurements of " + o.measurements + "\n\n");
+    if (const std::string w = material_data_mismatch(r.context.settings, data); !w.empty())
+      s << "**Warning: " << w << ".**\n\n";
     if (o.quick)
       s << "**--quick: coarse resolution (cell = t0/4, 1 particle per cell, 4 cells of tool travel). This checks "
            "that the pipeline runs; the simulated numbers are not converged and must not be read as a "

@@ -87,11 +87,11 @@ Scene build_cutting_scene(const CuttingParameters& c, const MaterialParameters& 
     throw CuttingKeyError(problem.key, "cutting tool: " + problem.message);
   // An edge radius above t0 meets the workpiece only after some travel: a cut shorter than that never cuts (it ran
   // to "complete" with zero forces).
-  if (const double engagement = tool_engagement_travel(c); c.cut_length <= engagement + h)
+  if (const double engagement = tool_engagement_travel(c); engagement > 0.0 && c.cut_length <= engagement + h)
     throw CuttingKeyError("cut_length",
                           fmt::format("cutting.cut_length = {:.3g} m: the edge (radius {:.3g} m, above the uncut chip "
                                       "thickness {:.3g} m) meets the workpiece only after {:.3g} m of travel, so the "
-                                      "tool would not cut; give at least {:.3g} m (the chip then needs {:g} t0 more "
+                                      "tool would not cut; give more than {:.3g} m (the chip then needs {:g} t0 more "
                                       "to form)",
                                       c.cut_length, c.edge_radius, t0, engagement, engagement + h, kEntryTravelT0));
   const double chip_room = c.chip_room > 0.0 ? c.chip_room : std::max(0.6 * c.cut_length + 2.0 * t0, 5.0 * t0);

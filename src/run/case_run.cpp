@@ -194,7 +194,7 @@ int CaseRun::finish() {
   ended_ = true;
   if (options_.progress) progress_->finish(status_);
   const double wall_s = wall_before_s_ + session_wall_s();
-  std::string energy_warning, drift_warning, forces_line;
+  std::string energy_warning, drift_warning, forces_line, input_reminder;
   try {
     nlohmann::json sections = to_json(summarize(sim_, cutting_, status_, wall_s, message_, threads_));
     energy_warning = sections["energy_balance"].value("warning", "");
@@ -206,6 +206,15 @@ int CaseRun::finish() {
     // had settled.
     if (sections.contains("steady_window") && sections["steady_window"].contains("drift"))
       drift_warning = sections["steady_window"]["drift"].value("warning", "");
+    // The start's input warnings scroll away above a long run's progress: the end says that they stand.
+    if (sections.contains("input_warnings") && sections["input_warnings"].is_array() &&
+        !sections["input_warnings"].empty()) {
+      std::string first = sections["input_warnings"][0].get<std::string>();
+      if (first.size() > 120) first = first.substr(0, 120) + "...";
+      input_reminder = fmt::format("warning: these results rest on {} input(s) flagged at the start (summary.json "
+                                   "input_warnings), first: {}\n",
+                                   sections["input_warnings"].size(), first);
+    }
     if (sections.contains("mean_cutting_force_N_per_mm") && sections["mean_cutting_force_N_per_mm"].is_number() &&
         sections["mean_thrust_force_N_per_mm"].is_number())
       forces_line = fmt::format("mean forces over the steady window: Fc {:.4g} N/mm, Ft {:.4g} N/mm (per mm of width)\n",
@@ -223,7 +232,7 @@ int CaseRun::finish() {
               << message_ << "\n";
   if (exit_code_ == kExitComplete && !energy_warning.empty()) std::cerr << "warning: " << energy_warning << "\n";
   if (exit_code_ == kExitComplete && !drift_warning.empty()) std::cerr << "warning: " << drift_warning << "\n";
-  std::cerr << forces_line;
+  std::cerr << forces_line << input_reminder;
   std::cerr << fmt::format(
       "{}: {} particles, {} steps, {:.3g} s simulated in {:.1f} s wall ({:.3g} particle-steps/s); results in {}\n",
       status_, sim_.particles().size(), sim_.step_count(), sim_.time(), wall_s,

@@ -393,8 +393,12 @@ def main(binary, scratch):
 
     # Another material set and friction (e.g. a calibrated pair) reach every case file; bad ones are input errors.
     other = os.path.join(scratch, "other")
-    validate(binary, "--list", "--material", "ti64-lee-lin-1998", "--friction", "0.5", "--h", "0.1",
-             "--speeds-m-per-min", "100", "--out", other)
+    ti = validate(binary, "--list", "--material", "ti64-lee-lin-1998", "--friction", "0.5", "--h", "0.1",
+                  "--speeds-m-per-min", "100", "--out", other)
+    # The built-in data are Ti-6Al-4V: another set is compared with them only under a warning.
+    steel = validate(binary, "--list", "--material", "steel-4340-ambati-2012", "--h", "0.1", "--out", other + "_steel")
+    if "measurements are of Ti-6Al-4V" in ti.stderr or "measurements are of Ti-6Al-4V" not in steel.stderr:
+        fail(f"the Ti-6Al-4V data warning: with a Ti set '{ti.stderr[-300:]}', with a steel '{steel.stderr[-300:]}'")
     with open(os.path.join(other, "cases", "forces_h0.1mm_vc100mpmin.toml")) as f:
         text = f.read()
     if 'material = "ti64-lee-lin-1998"' not in text or abs(case_value(
