@@ -102,9 +102,11 @@ void TableReader::fail_type(std::string_view key, std::string_view expected) con
 }
 
 // " (is 'solvr' a misspelling?)" when a present key is close to the missing `key`.
+// A present key that was read under its own name is no misspelling (a missing jc_m suggested the jc_A beside it).
 std::string TableReader::misspelling_hint(std::string_view key) const {
   for (const auto& [present, value] : *table_)
-    if (levenshtein(present.str(), key) <= std::max<std::size_t>(2, key.size() / 3))
+    if (std::find(known_.begin(), known_.end(), present.str()) == known_.end() &&
+        levenshtein(present.str(), key) <= std::max<std::size_t>(2, key.size() / 3))
       return fmt::format(" (is '{}' a misspelling?)", present.str());
   return "";
 }

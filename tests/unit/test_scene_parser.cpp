@@ -210,6 +210,14 @@ TEST(SceneValidation, UnknownKeysSuggestTheClosest) {
   expect_error(edit("max = [0.4, 0.4] }", "max = [0.4, 0.4], mid = 1 }"), "rectangle",
                {"key 'body[0].rectangle.mid'", "did you mean 'min'?"});
   expect_error(kBase + "zzz_completely_different = 1\n", "zzz_", {"known keys here:"});
+  // A key read under its own name is no misspelling of a missing one (a missing jc_m suggested the jc_A beside it).
+  const std::string jc = edit("library = \"elastic-unit\"",
+                              "model = \"johnson_cook\"\ndensity = 4430.0\nyoungs_modulus = 1.1e11\npoisson_ratio = 0.34\n"
+                              "specific_heat = 526.0\nmelting_temperature = 1878.0\njc_A = 8.6e8\njc_B = 3.3e8\n"
+                              "jc_n = 0.34\njc_C = 0.012");
+  const std::string missing_m = error_of(jc);
+  EXPECT_NE(missing_m.find("missing required key 'jc_m'"), std::string::npos) << missing_m;
+  EXPECT_EQ(missing_m.find("misspelling"), std::string::npos) << missing_m;
 }
 
 TEST(SceneValidation, WrongTypes) {
