@@ -44,25 +44,25 @@ void conduct_heat(Particles& P, Grid& G, std::span<const ShapeFunction> body_sha
   // maximum principle broken). Instead the gradient sees the face's value at the node, and the node's
   // mean is brought to that of the field through it: T_fixed + grad T . (x_mean - x_node), both from
   // the node's particles.
-  std::vector<double>& mapped = scratch.face_mapped;
   std::vector<Vec2>& offset = scratch.face_offset;
   std::vector<Vec2>& gradient = scratch.face_gradient;
   bool any_fixed = false;
   for (std::size_t node = 0; node < nn && !any_fixed; ++node)
     any_fixed = (G.fixed[node] & 4) && G.heat_capacity[node] > 0.0;
   if (any_fixed) {
-    mapped.assign(G.temperature.begin(), G.temperature.end());
     offset.assign(nn, Vec2::Zero());
     gradient.assign(nn, Vec2::Zero());
-    for (std::size_t node = 0; node < nn; ++node)
-      if (G.fixed[node] & 4) G.temperature[node] = G.fixed_temperature[node];
   }
+  // The value a node's field takes: its P2G temperature, the face's at a fixed node.
+  const auto field_at = [&](int node) {
+    return any_fixed && (G.fixed[node] & 4) ? G.fixed_temperature[node] : G.temperature[node];
+  };
   // Particle temperature gradient from the nodal temperatures, and its conductive flux scattered
   // back (the nodal temperatures are only read here, the heat rates only written).
   colouring.for_each(parallel, [&](std::size_t p) {
     const Stencil st = particle_stencil(G, body_shapes, P, p);
     Vec2 grad_T = Vec2::Zero();
-    for_each_stencil_node(G, st, [&](int node, double, const Vec2& grad) { grad_T += G.temperature[node] * grad; });
+    for_each_stencil_node(G, st, [&](int node, double, const Vec2& grad) { grad_T += field_at(node) * grad; });
     const double k = materials[P.material[p]].thermal_conductivity;
     const Vec2 flux = -k * grad_T;  // W/m^2
     // Conduct through the particle's solid only. Plastic flow keeps the volume, so V > V0 is crack
@@ -95,7 +95,7 @@ void conduct_heat(Particles& P, Grid& G, std::span<const ShapeFunction> body_sha
       // Within the fixed value and the node's particles (a gradient across a crack is no field's slope).
       target = std::clamp(target, std::min(G.fixed_temperature[node], range_lo[node]),
                           std::max(G.fixed_temperature[node], range_hi[node]));
-      dT[node] = target - mapped[node];
+      dT[node] = target - G.temperature[node];
     } else if (sinks && G.sink_conductance[node] > 0.0) {
       range_lo[node] = std::min(range_lo[node], G.sink_temperature[node]);
       range_hi[node] = std::max(range_hi[node], G.sink_temperature[node]);
@@ -108,7 +108,6 @@ void conduct_heat(Particles& P, Grid& G, std::span<const ShapeFunction> body_sha
       dT[node] = dt * G.heat_rate[node] / G.heat_capacity[node];
     }
   }
-  if (any_fixed) std::copy(mapped.begin(), mapped.end(), G.temperature.begin());  // the P2G values again
   // Back to the particles, as increments: a particle keeps its deviation from the nodal field (the
   // field is not smeared). Alone, that lets a particle left cold among hot ones (arriving under the
   // tool edge) take its nodes' whole cooling and fall below every temperature around it (-505 K at

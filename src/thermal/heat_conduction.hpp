@@ -53,9 +53,8 @@ struct ConductionScratch {
   std::vector<double> node_low;   // K, then J/m (the nodal shares of the cut heat)
   std::vector<double> node_high;  // K, then J/(K m) (the uncut particles' heat capacity)
   std::vector<double> cut_heat;   // J/m per particle
-  // At fixed-temperature nodes: the P2G temperature, K, and the sums of w m c (x_p - x_node), J m/(K m),
-  // and of w m c grad T_p, J/(m^2 m) (empty where no node is fixed).
-  std::vector<double> face_mapped;
+  // At fixed-temperature nodes: the sums of w m c (x_p - x_node), J m/(K m), and of w m c grad T_p,
+  // J/(m^2 m) (empty where no node is fixed).
   std::vector<Vec2> face_offset;
   std::vector<Vec2> face_gradient;
 };
