@@ -15,6 +15,7 @@
 #include "cutting/cutting_resolution.hpp"
 #include "io/input_error.hpp"
 #include "io/material_library.hpp"
+#include "io/whole_file.hpp"
 
 namespace mpmcut::validation {
 
@@ -46,13 +47,11 @@ void choose_material(const Options& o, ConditionRunSettings& s) {
     s.material_note = "chosen with --material; docs/materials.md";
     return;
   }
-  std::ifstream in(o.material_file, std::ios::binary);
-  if (!in) throw InputError(fmt::format("--material-file {}: cannot read the file", o.material_file));
-  std::ostringstream text;
-  text << in.rdbuf();
+  const std::optional<std::string> text = read_whole_file(o.material_file);
+  if (!text) throw InputError(fmt::format("--material-file {}: cannot read the file", o.material_file));
   MaterialLibrary with_builtin = builtin_material_library();
   const std::size_t before = with_builtin.sets().size();
-  with_builtin.add_file(text.str(), o.material_file);  // InputError at the file's line and key
+  with_builtin.add_file(*text, o.material_file);  // InputError at the file's line and key
   if (with_builtin.sets().size() == before)
     throw InputError(fmt::format("--material-file {}: no [[material]] set in the file", o.material_file));
   std::vector<std::string> names;
@@ -66,7 +65,7 @@ void choose_material(const Options& o, ConditionRunSettings& s) {
     throw InputError(fmt::format("--material {}: no such set in {} ({}) or the library ({})", name, o.material_file,
                                  join(names, ", "), join(builtin_material_library().names(), ", ")));
   s.material = name;
-  s.material_definitions = text.str();
+  s.material_definitions = *text;
   s.material_note = fmt::format("from --material-file {}", o.material_file);
 }
 
@@ -80,11 +79,9 @@ std::optional<double> Condition::cells_per_thermal_length(double kappa) const {
 namespace {
 
 DataFile read_user_file(const std::string& option, const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(fmt::format("{} {}: cannot read the file", option, path));
-  std::stringstream text;
-  text << in.rdbuf();
-  return read_data_file(text.str(), path);
+  const std::optional<std::string> text = read_whole_file(path);
+  if (!text) throw InputError(fmt::format("{} {}: cannot read the file", option, path));
+  return read_data_file(*text, path);
 }
 
 }  // namespace

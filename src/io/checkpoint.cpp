@@ -15,6 +15,7 @@
 
 #include <fmt/format.h>
 
+#include "io/whole_file.hpp"
 
 namespace mpmcut {
 
@@ -484,11 +485,9 @@ Checkpoint decode_checkpoint(std::string_view bytes, const std::string& name) {
 }
 
 Checkpoint read_checkpoint_file(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw CheckpointError(system_error("read checkpoint", file));
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw CheckpointError(system_error("read checkpoint", file));
-  return decode_checkpoint(bytes, file.string());
+  const std::optional<std::string> bytes = read_whole_file(file);
+  if (!bytes) throw CheckpointError(system_error("read checkpoint", file));
+  return decode_checkpoint(*bytes, file.string());
 }
 
 void Checkpoint::restore(Simulation& sim) && {

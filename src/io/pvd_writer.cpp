@@ -9,6 +9,7 @@
 #include <fmt/core.h>
 
 #include "io/atomic_file.hpp"
+#include "io/whole_file.hpp"
 
 namespace mpmcut {
 
@@ -58,11 +59,9 @@ void PvdSeries::write(const std::filesystem::path& index_file) const {
 }
 
 PvdSeries PvdSeries::read(const std::filesystem::path& index_file) {
-  std::ifstream in(index_file);
-  if (!in) throw std::runtime_error(fmt::format("cannot read '{}'", index_file.string()));
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string s = text.str();
+  const std::optional<std::string> text = read_whole_file(index_file);
+  if (!text) throw std::runtime_error(fmt::format("cannot read '{}'", index_file.string()));
+  const std::string& s = *text;
   // Our own format: one <DataSet .../> per line with timestep before file.
   static const std::regex dataset(R"re(<DataSet\s[^>]*timestep="([^"]*)"[^>]*file="([^"]*)")re");
   PvdSeries series;

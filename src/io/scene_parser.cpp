@@ -9,6 +9,7 @@
 
 #include "io/material_library.hpp"
 #include "io/toml_reader.hpp"
+#include "io/whole_file.hpp"
 
 namespace mpmcut {
 
@@ -454,11 +455,9 @@ std::string read_case_text(const std::filesystem::path& file) {
   if (!std::filesystem::is_regular_file(file, ec))
     throw InputError(fmt::format("{}: cannot read case file: {}", file.string(),
                                  std::filesystem::exists(file, ec) ? "not a regular file" : "no such file"));
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in) throw InputError(fmt::format("{}: cannot read case file", file.string()));
-  return text.str();
+  std::optional<std::string> text = read_whole_file(file);
+  if (!text) throw InputError(fmt::format("{}: cannot read case file", file.string()));
+  return std::move(*text);
 }
 
 }  // namespace mpmcut

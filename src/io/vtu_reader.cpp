@@ -16,6 +16,7 @@
 #include <fmt/core.h>
 
 #include "io/vtu_field_layout.hpp"
+#include "io/whole_file.hpp"
 
 namespace mpmcut {
 
@@ -34,11 +35,9 @@ struct ArrayDecl {
 class Reader {
  public:
   explicit Reader(const std::filesystem::path& file) : file_(file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) fail("cannot open the file");
-    std::ostringstream s;
-    s << in.rdbuf();
-    bytes_ = s.str();
+    std::optional<std::string> bytes = read_whole_file(file);
+    if (!bytes) fail("cannot open the file");
+    bytes_ = std::move(*bytes);
     parse_header();
   }
 

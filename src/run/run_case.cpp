@@ -16,6 +16,7 @@
 #include "io/checkpoint.hpp"
 #include "io/input_error.hpp"
 #include "io/result_directory.hpp"
+#include "io/whole_file.hpp"
 #include "cutting/cutting_case.hpp"
 #include "run/case_loading.hpp"
 #include "run/case_run.hpp"
@@ -127,9 +128,7 @@ ExistingRun existing_run(const fs::path& dir, const Case& c) {
   if (!fs::exists(dir / "scene.toml", ec) || !fs::exists(dir / "summary.json", ec)) return ExistingRun::None;
   std::ostringstream expected;
   write_scene(c, expected);
-  std::ifstream in(dir / "scene.toml", std::ios::binary);
-  const std::string found((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (found != expected.str()) return ExistingRun::None;
+  if (read_whole_file(dir / "scene.toml") != expected.str()) return ExistingRun::None;
   std::string status;
   try {
     status = read_summary(dir / "summary.json").status;

@@ -20,6 +20,7 @@
 #include "cutting/cutting_parameters.hpp"
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
+#include "io/whole_file.hpp"
 #include "studies/task_farm.hpp"
 
 namespace mpmcut {
@@ -623,12 +624,8 @@ std::string measurements_text(const CalibrationConfig& c) {
   return s;
 }
 
-std::string read_text(const fs::path& file) {
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+// Empty when the file cannot be read: every caller compares it with the text it expects.
+std::string read_text(const fs::path& file) { return read_whole_file(file).value_or(""); }
 
 }  // namespace
 

@@ -12,6 +12,7 @@
 #include "io/material_library.hpp"
 #include "io/scene_writer.hpp"
 #include "io/toml_reader.hpp"
+#include "io/whole_file.hpp"
 #include "run/run_case.hpp"
 #include "studies/calibration.hpp"
 
@@ -60,11 +61,9 @@ nlopt_algorithm algorithm(TableReader& t, const char* key, const std::string& na
 }  // namespace
 
 CalibrationConfig read_calibration_config(const fs::path& file, std::string_view builtin_forces_csv) {
-  std::ifstream in(file);
-  if (!in) throw InputError(fmt::format("{}: cannot read the calibration file", file.string()));
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  const toml::table root = parse_toml(buffer.str(), file.string());
+  const std::optional<std::string> text = read_whole_file(file);
+  if (!text) throw InputError(fmt::format("{}: cannot read the calibration file", file.string()));
+  const toml::table root = parse_toml(*text, file.string());
   TableReader t(root, "", std::make_shared<InputSource>(InputSource{file.string(), {}}));
 
   CalibrationConfig c;
@@ -166,12 +165,10 @@ CalibrationConfig read_calibration_config(const fs::path& file, std::string_view
   if (data.has("measurements")) {
     const std::string name = data.string("measurements", "");
     const fs::path path = name.starts_with('/') ? fs::path(name) : file.parent_path() / name;
-    std::ifstream m(path);
-    if (!m) data.fail("measurements", fmt::format("cannot read the measurement file {}", path.string()));
-    std::stringstream text;
-    text << m.rdbuf();
+    const std::optional<std::string> text = read_whole_file(path);
+    if (!text) data.fail("measurements", fmt::format("cannot read the measurement file {}", path.string()));
     c.measurements_source = path.string();
-    measurements = read_data_file(text.str(), c.measurements_source);
+    measurements = read_data_file(*text, c.measurements_source);
   } else {
     c.measurements_source = kBuiltinForcesFile;
     measurements = read_data_file(builtin_forces_csv, c.measurements_source);

@@ -11,6 +11,7 @@
 
 #include "analysis/grid_convergence.hpp"
 #include "io/input_error.hpp"
+#include "io/whole_file.hpp"
 #include "studies/measured_conditions.hpp"
 
 namespace mpmcut {
@@ -42,12 +43,11 @@ std::string percent_text(const std::optional<double>& f) {
 }  // namespace
 
 GridConvergenceReport grid_convergence_report(const fs::path& sweep_csv) {
-  std::ifstream in(sweep_csv, std::ios::binary);
-  if (!in) throw InputError(fmt::format("{}: cannot read (a sweep directory has sweep.csv once the sweep ran)",
-                                        sweep_csv.string()));
-  std::stringstream text;
-  text << in.rdbuf();
-  const DataFile f = read_data_file(text.str(), sweep_csv.string());
+  const std::optional<std::string> text = read_whole_file(sweep_csv);
+  if (!text)
+    throw InputError(fmt::format("{}: cannot read (a sweep directory has sweep.csv once the sweep ran)",
+                                 sweep_csv.string()));
+  const DataFile f = read_data_file(*text, sweep_csv.string());
   std::vector<std::string> needed{"speed_m_per_s", "feed_mm", "cells_per_feed", "status"};
   for (const Quantity& q : kQuantities) needed.push_back(q.column);
   f.require_columns(needed);

@@ -5,6 +5,7 @@
 #include <system_error>
 
 #include "io/atomic_file.hpp"
+#include "io/whole_file.hpp"
 #include "run/run_case.hpp"
 
 namespace mpmcut {
@@ -21,9 +22,9 @@ const std::vector<std::string>& run_record_files() {
 namespace {
 
 std::string read_whole(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read " + file.string());
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::optional<std::string> text = read_whole_file(file);
+  if (!text) throw std::runtime_error("cannot read " + file.string());
+  return std::move(*text);
 }
 
 // Copies the record files present in `from` into `to` (created), each atomically, summary.json last.
