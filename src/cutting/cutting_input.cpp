@@ -34,7 +34,8 @@ CuttingParameters read_cutting_parameters(TableReader& t) {
   c.clearance_angle_deg = t.number("clearance_angle_deg", c.clearance_angle_deg, Range::open(0.0, 45.0, "degrees"));
   t.check("rake_angle_deg", c.rake_angle_deg + c.clearance_angle_deg < 80.0,
           "such that rake + clearance < 80 degrees (the tool wedge needs a positive angle)", c.rake_angle_deg);
-  c.edge_radius = t.number("edge_radius", c.edge_radius, Range::closed(0.0, 1.0, "m"));
+  // Bounded by the uncut chip thickness read above, so one message states the whole allowed range.
+  c.edge_radius = t.number("edge_radius", c.edge_radius);
   t.check("edge_radius", c.edge_radius >= 0.0 && c.edge_radius < c.uncut_chip_thickness * 10.0,
           fmt::format("a length >= 0 m and below 10 uncut chip thicknesses ({:.4g} m)", 10.0 * c.uncut_chip_thickness),
           c.edge_radius);

@@ -44,6 +44,13 @@ std::string describe_type(const toml::node& node) {
 std::string describe_value(const toml::node& node) {
   if (node.is_table()) return "a table";
   if (auto s = node.value_exact<std::string>()) return "\"" + *s + "\"";
+  // Shortest text that reads back as the same double: -1e-06, not toml++'s -9.9999999999999995e-07;
+  // a whole number keeps its ".0", as TOML writes a float.
+  if (auto d = node.value_exact<double>()) {
+    std::string text = fmt::format("{}", *d);
+    if (text.find_first_of(".einf") == std::string::npos) text += ".0";
+    return text;
+  }
   std::ostringstream os;
   node.visit([&](const auto& v) { os << v; });
   std::string text = os.str();

@@ -74,6 +74,14 @@ TEST(InputBounds, IssueReportsAreInputErrorsNamingKeyRangeAndValue) {
   m = cutting_error({"cutting.initial_temperature=1900"});
   EXPECT_NE(m.find("must be in (0, 1878) K (below the melting temperature), got 1900"), std::string::npos) << m;
   EXPECT_EQ(cutting_error({"cutting.initial_temperature=1800"}), "");
+  // One message states the whole range of the edge radius (it was "[0, 1] m" below zero and the
+  // t0 bound above), and a value prints as the shortest text that reads back the same.
+  m = cutting_error({"cutting.edge_radius=-1e-6"});
+  EXPECT_NE(m.find("key 'cutting.edge_radius': must be a length >= 0 m and below 10 uncut chip thicknesses"),
+            std::string::npos) << m;
+  EXPECT_NE(m.find("got -1e-06"), std::string::npos) << m;
+  m = cutting_error({"cutting.friction=2.1"});
+  EXPECT_TRUE(m.ends_with("got 2.1")) << m;
   m = error_of(kDisk, {"solver.end_time=1e308"});
   EXPECT_NE(m.find("key 'solver.end_time': must be in (0, 1000] s, got 1e+308"), std::string::npos) << m;
   // The location: file and line for a value in the file, the override for a --set.
