@@ -194,7 +194,7 @@ int CaseRun::finish() {
   ended_ = true;
   if (options_.progress) progress_->finish(status_);
   const double wall_s = wall_before_s_ + session_wall_s();
-  std::string energy_warning, drift_warning, forces_line, input_reminder;
+  std::string energy_warning, drift_warning, chip_note, forces_line, input_reminder;
   try {
     nlohmann::json sections = to_json(summarize(sim_, cutting_, status_, wall_s, message_, threads_));
     energy_warning = sections["energy_balance"].value("warning", "");
@@ -206,6 +206,11 @@ int CaseRun::finish() {
     // had settled.
     if (sections.contains("steady_window") && sections["steady_window"].contains("drift"))
       drift_warning = sections["steady_window"]["drift"].value("warning", "");
+    // A cut long enough for the start's check can still be too short for the chip's statistics over time
+    // (they need a chip of twice the entry chip's area in the window): say so where the forces are printed.
+    if (sections.contains("chip_over_time") && sections["chip_over_time"].contains("note") &&
+        sections["chip_over_time"]["note"].is_string())
+      chip_note = "chip statistics over time: " + sections["chip_over_time"]["note"].get<std::string>();
     // The start's input warnings scroll away above a long run's progress: the end says that they stand.
     if (sections.contains("input_warnings") && sections["input_warnings"].is_array() &&
         !sections["input_warnings"].empty()) {
@@ -232,6 +237,7 @@ int CaseRun::finish() {
               << message_ << "\n";
   if (exit_code_ == kExitComplete && !energy_warning.empty()) std::cerr << "warning: " << energy_warning << "\n";
   if (exit_code_ == kExitComplete && !drift_warning.empty()) std::cerr << "warning: " << drift_warning << "\n";
+  if (exit_code_ == kExitComplete && !chip_note.empty()) std::cerr << "warning: " << chip_note << "\n";
   std::cerr << forces_line << input_reminder;
   std::cerr << fmt::format(
       "{}: {} particles, {} steps, {:.3g} s simulated in {:.1f} s wall ({:.3g} particle-steps/s); results in {}\n",
