@@ -58,6 +58,16 @@ std::vector<std::string> input_plausibility_warnings(const CuttingParameters& c,
                               "1020 for magnesium): a value in kJ/(kg K) instead of J/(kg K)?",
                               material_key(m, "specific_heat"), m.specific_heat, b.min_specific_heat_J_kgK,
                               b.max_specific_heat_J_kgK));
+  if (m.thermal_conductivity > 0.0 &&
+      (m.thermal_conductivity < b.min_thermal_conductivity_W_mK || m.thermal_conductivity > b.max_thermal_conductivity_W_mK))
+    out.push_back(fmt::format("{} = {:g} W/(m K) is outside {:g}-{:g} W/(m K) (a metal's is about 7 for Ti-6Al-4V to 429 "
+                              "for silver): a value in W/(cm K) (x 100 for W/(m K)) or in another unit?",
+                              material_key(m, "thermal_conductivity"), m.thermal_conductivity,
+                              b.min_thermal_conductivity_W_mK, b.max_thermal_conductivity_W_mK));
+  if (m.model == MaterialModel::JohnsonCook && m.jc_C > b.max_jc_C)
+    out.push_back(fmt::format("{} = {:g} is above {:g} (metals' sets: 0.001-0.06, e.g. 0.014 for 4340 steel): the "
+                              "strain-rate coefficient as a percentage (/ 100)?",
+                              material_key(m, "jc_C"), m.jc_C, b.max_jc_C));
   if (m.model == MaterialModel::JohnsonCook && m.youngs_modulus > 0.0) {
     // A + B, the flow stress at a plastic strain of 1, against E: unit-free, so it holds for every metal.
     const double ratio = (m.jc_A + m.jc_B) / m.youngs_modulus;

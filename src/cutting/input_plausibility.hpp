@@ -18,7 +18,9 @@ namespace mpmcut {
 // ASM Handbook Vol. 2, CRC Handbook): the lightest structural metal is magnesium (1740 kg/m^3), the densest
 // osmium (22 590); Young's moduli run from lead (16 GPa) to tungsten (411 GPa); specific heats from lead
 // (129 J/(kg K)) to magnesium (1020); Johnson-Cook A + B, the flow stress at a plastic strain of 1, lies at
-// 0.3-2 % of E (OFHC copper 382 MPa / 124 GPa, 4340 steel 1302 MPa / 200 GPa);
+// 0.3-2 % of E (OFHC copper 382 MPa / 124 GPa, 4340 steel 1302 MPa / 200 GPa); the Johnson-Cook strain-rate
+// coefficient C of metals' sets is 0.001-0.06 (Johnson and Cook 1983: OFHC copper 0.025, Armco iron 0.06, 4340
+// steel 0.014); thermal conductivities run from Ti-6Al-4V (about 7 W/(m K)) and manganese (7.8) to silver (429);
 // the fracture energy of a metal is 1e3-1e5 J/m^2, of glass about 10.
 struct MetalPlausibility {
   double min_density_kg_m3 = 1000.0;
@@ -32,6 +34,12 @@ struct MetalPlausibility {
   // A or B alone, where given (> 0): a term in MPa beside the other in Pa leaves A + B plausible. The softest
   // terms of metals' sets are some 2e-4 E (OFHC copper's A = 90 MPa at E = 124 GPa); a slip is 1e-6 of its value.
   double min_flow_stress_term_over_E = 1e-5;
+  // C as a percentage (1.4 for 0.014) is 100 times too large; no metal's set comes near 0.5.
+  double max_jc_C = 0.5;
+  // A conductivity in W/(cm K) is 100 times too small. 0 is allowed without a word: an adiabatic workpiece is a
+  // model choice (docs/materials.md says an own set's conductivity defaults to 0).
+  double min_thermal_conductivity_W_mK = 1.0;
+  double max_thermal_conductivity_W_mK = 1000.0;
   double min_fracture_energy_J_m2 = 1.0;
   // Below: a temperature in degrees Celsius? (Room temperature in degrees C is 20-25; cryogenic machining with
   // liquid nitrogen, 77 K, is real practice and passes.)

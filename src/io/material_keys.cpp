@@ -9,13 +9,6 @@ namespace mpmcut {
 
 namespace {
 
-// Shortest text that reads back to the same double; always a TOML float.
-std::string toml_number(double x) {
-  std::string s = fmt::format("{}", x);
-  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";  // 'n': inf, nan
-  return s;
-}
-
 template <class P>
 void read_table(TableReader& t, const ParameterTable<P>& table, MaterialParameters& m) {
   P& p = m;
@@ -59,7 +52,7 @@ void write_table(const ParameterTable<P>& table, const MaterialParameters& m, st
     }
     out << row.key << " = ";
     switch (row.kind) {
-      case Parameter<P>::Kind::Number: out << toml_number(p.*row.number); break;
+      case Parameter<P>::Kind::Number: out << toml_float(p.*row.number); break;
       case Parameter<P>::Kind::Flag: out << (p.*row.flag ? "true" : "false"); break;
       case Parameter<P>::Kind::Choice: out << '"' << row.options.at(row.get_option(p)) << '"'; break;
     }

@@ -1,6 +1,7 @@
 #include "io/scene_writer.hpp"
 
 #include "io/material_keys.hpp"
+#include "io/toml_reader.hpp"
 
 #include <fmt/format.h>
 
@@ -8,12 +9,7 @@ namespace mpmcut {
 
 namespace {
 
-// Shortest text that reads back to the same double; always a TOML float.
-std::string num(double x) {
-  std::string s = fmt::format("{}", x);
-  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";  // 'n': inf, nan
-  return s;
-}
+std::string num(double x) { return toml_float(x); }
 
 // A TOML basic string: double quotes, with quotes, backslashes and control characters escaped.
 std::string str(const std::string& s) {

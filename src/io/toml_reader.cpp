@@ -41,16 +41,17 @@ std::string describe_type(const toml::node& node) {
   }
 }
 
+std::string toml_float(double x) {
+  std::string s = fmt::format("{}", x);
+  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";  // 'n': inf, nan
+  return s;
+}
+
 std::string describe_value(const toml::node& node) {
   if (node.is_table()) return "a table";
   if (auto s = node.value_exact<std::string>()) return "\"" + *s + "\"";
-  // Shortest text that reads back as the same double: -1e-06, not toml++'s -9.9999999999999995e-07;
-  // a whole number keeps its ".0", as TOML writes a float.
-  if (auto d = node.value_exact<double>()) {
-    std::string text = fmt::format("{}", *d);
-    if (text.find_first_of(".einf") == std::string::npos) text += ".0";
-    return text;
-  }
+  // -1e-06, not toml++'s -9.9999999999999995e-07.
+  if (auto d = node.value_exact<double>()) return toml_float(*d);
   std::ostringstream os;
   node.visit([&](const auto& v) { os << v; });
   std::string text = os.str();

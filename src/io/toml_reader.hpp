@@ -41,6 +41,8 @@ toml::table parse_toml(std::string_view text, const std::string& source_name);
 std::string describe_type(const toml::node& node);
 // A value as it would be written in TOML (tables and long arrays abbreviated).
 std::string describe_value(const toml::node& node);
+// The shortest text that reads back as the same double, always a TOML float (5000.0, -1e-06, inf).
+std::string toml_float(double x);
 
 class TableReader {
  public:

@@ -1,5 +1,6 @@
 // Warnings on a cut's inputs in a wrong unit (src/cutting/input_plausibility.*): every library set that can
-// be cut passes without one, and each usual slip (g/cm^3, GPa, MPa, kJ/(kg K), MPa sqrt(m), degrees Celsius)
+// be cut passes without one, and each usual slip (g/cm^3, GPa, MPa, kJ/(kg K), W/(cm K), C in percent,
+// MPa sqrt(m), degrees Celsius)
 // gives exactly its own warning, naming the key and the likely unit.
 #include <gtest/gtest.h>
 
@@ -61,6 +62,18 @@ TEST(InputPlausibility, EachUnitSlipGivesItsOwnWarning) {
   m = ti;
   m.specific_heat = 0.5263;  // kJ/(kg K)
   expect_one_warning(input_plausibility_warnings(cut, m), {"specific_heat = 0.5263", "kJ/(kg K)"});
+  m = ti;
+  m.thermal_conductivity = 0.067;  // W/(cm K)
+  expect_one_warning(input_plausibility_warnings(cut, m), {"thermal_conductivity = 0.067 W/(m K)", "W/(cm K)"});
+  m.thermal_conductivity = 0.0;  // adiabatic: a model choice
+  EXPECT_TRUE(input_plausibility_warnings(cut, m).empty());
+  m.thermal_conductivity = 429.0;  // silver
+  EXPECT_TRUE(input_plausibility_warnings(cut, m).empty());
+  m = ti;
+  m.jc_C = 100.0 * ti.jc_C;  // percent
+  expect_one_warning(input_plausibility_warnings(cut, m), {"jc_C = ", "as a percentage"});
+  m.jc_C = 0.06;  // Armco iron
+  EXPECT_TRUE(input_plausibility_warnings(cut, m).empty());
   m = ti;
   m.jc_A *= 1e-6;  // MPa
   m.jc_B *= 1e-6;
