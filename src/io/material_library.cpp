@@ -20,20 +20,49 @@ std::string list_names(const std::vector<std::string>& names) {
 
 }  // namespace
 
-MaterialParameters read_material(TableReader& t, const MaterialLibrary& library) {
+// The names of a file's [[material]] tables, in order ("" where a table has none: its own error comes later).
+std::vector<std::string> set_names(std::vector<TableReader>& tables) {
+  std::vector<std::string> names;
+  for (TableReader& t : tables) {
+    const toml::node* n = t.node("name");
+    names.push_back(n && n->is_string() ? n->value_or(std::string()) : std::string());
+  }
+  return names;
+}
+
+std::string with_changed_keys(const std::string& citation, const std::string& set, TableReader& t) {
+  std::vector<std::string> changed;
+  for (const std::string& key : t.present_keys())
+    if (key != "name" && key != "library" && key != "citation") changed.push_back(key);
+  if (changed.empty()) return citation;
+  std::string keys;
+  for (const std::string& k : changed) keys += (keys.empty() ? "" : ", ") + k;
+  // The base set's citation stays: its other numbers still come from there.
+  return fmt::format("{}{}with {} changed from library set \"{}\"", citation, citation.empty() ? "" : "; ", keys, set);
+}
+
+MaterialParameters read_material(TableReader& t, const MaterialLibrary& library,
+                                 const std::vector<std::string>& later_names) {
   MaterialParameters m;
   t.require_key("name", "the name bodies use to refer to this material");
   const bool from_library = t.has("library");
+  std::string base_name;
   if (from_library) {
-    const std::string set = t.string("library", "");
-    const MaterialParameters* base = library.find(set);
+    base_name = t.string("library", "");
+    const MaterialParameters* base = library.find(base_name);
+    if (base == nullptr && std::find(later_names.begin(), later_names.end(), base_name) != later_names.end())
+      t.fail("library", fmt::format("material set \"{}\" is defined further down this file: a [[material]] can "
+                                    "start from a library set or from a set defined above it; move \"{}\" up",
+                                    base_name, base_name));
     if (base == nullptr)
-      t.fail("library", fmt::format("no material set \"{}\"; available sets: {}", set, list_names(library.names())));
+      t.fail("library", fmt::format("no material set \"{}\"; available sets: {}", base_name, list_names(library.names())));
     m = *base;
   }
   m.name = t.string("name", "");
   t.check("name", !m.name.empty(), "a non-empty string", 0.0);
-  m.citation = t.string("citation", m.citation);
+  m.citation = t.has("citation") ? t.string("citation", "")
+               : from_library    ? with_changed_keys(m.citation, base_name, t)
+                                 : std::string();
   read_material_keys(t, m, !from_library);
   // After all keys are read, so that inherited (library) values are checked too.
   check_material_keys(t, m);
@@ -44,8 +73,11 @@ MaterialParameters read_material(TableReader& t, const MaterialLibrary& library)
 std::vector<MaterialParameters> read_case_materials(
     TableReader& top, MaterialLibrary& library, const std::function<void(TableReader&, const MaterialParameters&)>& check) {
   std::vector<MaterialParameters> sets;
-  for (TableReader& t : top.array_of_tables("material")) {
-    MaterialParameters m = read_material(t, library);
+  std::vector<TableReader> tables = top.array_of_tables("material");
+  const std::vector<std::string> names = set_names(tables);
+  for (std::size_t i = 0; i < tables.size(); ++i) {
+    TableReader& t = tables[i];
+    MaterialParameters m = read_material(t, library, std::vector<std::string>(names.begin() + i + 1, names.end()));
     if (std::any_of(sets.begin(), sets.end(), [&](const MaterialParameters& s) { return s.name == m.name; }))
       t.fail("name", fmt::format("duplicate material name \"{}\" (an earlier [[material]] of this file has it)", m.name));
     if (check) check(t, m);
@@ -59,8 +91,11 @@ void MaterialLibrary::add_file(std::string_view toml_text, const std::string& so
   toml::table root = parse_toml(toml_text, source_name);
   auto source = std::make_shared<InputSource>(InputSource{source_name, {}});
   TableReader file(root, "", source);
-  for (TableReader& t : file.array_of_tables("material")) {
-    MaterialParameters m = read_material(t, *this);
+  std::vector<TableReader> tables = file.array_of_tables("material");
+  const std::vector<std::string> names = set_names(tables);
+  for (std::size_t i = 0; i < tables.size(); ++i) {
+    TableReader& t = tables[i];
+    MaterialParameters m = read_material(t, *this, std::vector<std::string>(names.begin() + i + 1, names.end()));
     if (find(m.name) != nullptr) t.fail("name", fmt::format("duplicate material set \"{}\"", m.name));
     sets_.push_back(std::move(m));
   }

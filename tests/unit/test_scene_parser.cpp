@@ -320,7 +320,8 @@ TEST(SceneValidation, DuplicateNames) {
 }
 
 // A [[material]] of a case may start from an earlier set of the same file (validate --material-key writes a set
-// "trial" that starts from the --material-file set the case carries); a later set is not yet known.
+// "trial" that starts from the --material-file set the case carries); a later set is not yet known, and the error
+// says so (it read "no material set").
 TEST(SceneParser, ACaseSetMayStartFromAnEarlierSetOfTheFile) {
   const Scene s = parse_scene(kBase + "[[material]]\nname = \"m2\"\nlibrary = \"m\"\nyoungs_modulus = 3.0\n", "case.toml");
   ASSERT_EQ(s.materials.size(), 2u);
@@ -329,7 +330,9 @@ TEST(SceneParser, ACaseSetMayStartFromAnEarlierSetOfTheFile) {
   EXPECT_DOUBLE_EQ(s.materials[1].poisson_ratio, s.materials[0].poisson_ratio);
   expect_error(edit("library = \"elastic-unit\"", "library = \"later\"") +
                    "[[material]]\nname = \"later\"\nlibrary = \"elastic-unit\"\n",
-               "library = \"later\"", {"key 'material[0].library'", "no material set \"later\""});
+               "library = \"later\"",
+               {"key 'material[0].library'", "material set \"later\" is defined further down this file",
+                "move \"later\" up"});
   // The cutting preset's workpiece, too: a set of the file, changed from another set of the file.
   const std::string cut = "[[material]]\nname = \"fitted\"\nlibrary = \"ti64-cutting\"\njc_B = 440e6\n"
                           "[[material]]\nname = \"trial\"\nlibrary = \"fitted\"\njc_C = 0.035\n"
@@ -464,12 +467,21 @@ TEST(SceneMaterials, LibrarySetWithPerKeyOverride) {
   const MaterialParameters& m = s.materials.at(0);
   const MaterialParameters& set = *builtin_material_library().find("ti64-lesuer-2000");
   EXPECT_EQ(m.name, "m");
-  EXPECT_EQ(m.citation, set.citation);
+  // The library set's citation, with what no longer comes from it.
+  EXPECT_EQ(m.citation, set.citation + "; with damage, jc_A changed from library set \"ti64-lesuer-2000\"");
   EXPECT_DOUBLE_EQ(m.jc_A, 1.0e9);
   EXPECT_FALSE(m.damage_enabled);
   EXPECT_DOUBLE_EQ(m.jc_B, set.jc_B);
   EXPECT_DOUBLE_EQ(m.fracture_energy, set.fracture_energy);
   EXPECT_EQ(m.model, MaterialModel::JohnsonCook);
+}
+
+TEST(SceneMaterials, ACitationOfItsOwnOrNoChangeKeepsTheCitation) {
+  const std::string own = edit("library = \"elastic-unit\"", "library = \"ti64-lesuer-2000\"\njc_A = 1.0e9\ncitation = \"mine\"");
+  EXPECT_EQ(parse_scene(own, "case.toml").materials.at(0).citation, "mine");
+  const std::string same = edit("library = \"elastic-unit\"", "library = \"ti64-lesuer-2000\"");
+  EXPECT_EQ(parse_scene(same, "case.toml").materials.at(0).citation,
+            builtin_material_library().find("ti64-lesuer-2000")->citation);
 }
 
 TEST(SceneMaterials, FractureToughnessBecomesFractureEnergy) {
