@@ -47,8 +47,9 @@ CuttingParameters read_cutting_parameters(TableReader& t) {
   // Also below the workpiece material's melting point: checked once the material is known.
   c.initial_temperature = t.number("initial_temperature", c.initial_temperature, Range::open(0.0, 1e4, "K"));
   c.cell_size = t.number("cell_size", c.cell_size);
-  t.check("cell_size", c.cell_size >= 0.0 && c.cell_size <= 0.5 * c.uncut_chip_thickness,
-          "a length in [0, uncut_chip_thickness/2] (m; 0 = t0/10)", c.cell_size);
+  // Not below grid.cell_size's 1 nm: the expanded scene must read back (1e-300 was taken, and its scene refused).
+  t.check("cell_size", c.cell_size == 0.0 || (c.cell_size >= 1e-9 && c.cell_size <= 0.5 * c.uncut_chip_thickness),
+          "0 (= t0/10) or a length in [1e-9, uncut_chip_thickness/2] m", c.cell_size);
   c.particles_per_cell =
       static_cast<int>(t.integer("particles_per_cell", c.particles_per_cell, Range::closed(1, 4, "per direction")));
   c.conduction = t.boolean("conduction", c.conduction);

@@ -3,13 +3,17 @@
 #include <cctype>
 #include <cmath>
 #include <fstream>
+#include <limits>
+#include <optional>
 #include <sstream>
 
 #include <fmt/format.h>
 
+#include "contact/rigid_polygon.hpp"
 #include "io/material_library.hpp"
 #include "io/toml_reader.hpp"
 #include "io/whole_file.hpp"
+#include "solver/seeding.hpp"
 
 namespace mpmcut {
 
@@ -297,8 +301,14 @@ ThermalSpec read_thermal(std::optional<TableReader> t) {
   th.conduction = t->boolean("conduction", th.conduction);
   for (auto [side, value] : {std::pair{"left", &th.left}, {"right", &th.right}, {"bottom", &th.bottom}, {"top", &th.top}}) {
     *value = t->optional_number(side);
-    if (*value)
+    if (*value) {
       t->check(side, **value, Range::open_closed(0.0, kMaxTemperature, "K", "absent for an insulated side"));
+      // Without conduction no heat crosses the side: the value would be ignored without a word.
+      if (!th.conduction)
+        t->fail(side, fmt::format("= {:g} K holds the side's temperature through the conduction update, which is off: "
+                                  "give thermal.conduction = true, or leave the side out",
+                                  **value));
+    }
   }
   t->reject_unknown_keys();
   return th;
@@ -345,6 +355,13 @@ Shape read_shape(TableReader& t, const GridSpec& grid) {
   return shape;
 }
 
+// The key that holds a body's shape (read_shape made sure there is exactly one).
+std::string shape_key(TableReader& t) {
+  for (const char* key : {"rectangle", "disk", "polygon"})
+    if (t.has(key)) return key;
+  return "rectangle";
+}
+
 std::string list_names(const std::vector<MaterialParameters>& materials) {
   std::string text;
   for (const auto& m : materials) text += (text.empty() ? "" : ", ") + ("\"" + m.name + "\"");
@@ -369,7 +386,77 @@ BodySpec read_body(TableReader t, const Scene& scene) {
   // Starting at the material's reference temperature means no thermal softening at rest.
   b.temperature = t.number("temperature", scene.materials[m].room_temperature, temperature_range(scene.materials[m]));
   t.reject_unknown_keys();
+  // A shape thinner than the particle spacing holds none of the sub-grid's points: the body would vanish silently.
+  const Vec2 everywhere = Vec2::Constant(std::numeric_limits<double>::infinity());
+  bool seeded = false;
+  for_each_seed_point(b, scene.grid.min, scene.grid.cell_size, -everywhere, everywhere, [&](const Vec2&) {
+    seeded = true;
+    return false;
+  });
+  if (!seeded)
+    t.fail(shape_key(t), fmt::format("body \"{}\" gets no particle: its shape holds none of the points of the particle "
+                                     "sub-grid (spacing grid.cell_size / particles_per_cell = {:g} m); make the shape "
+                                     "larger than that spacing, or give a smaller cell_size or more particles_per_cell",
+                                     b.name, scene.grid.cell_size / b.particles_per_cell));
   return b;
+}
+
+// A seed point of `body` inside `inside`'s region (within the box [lo, hi]), if any.
+template <class Inside>
+std::optional<Vec2> first_point_inside(const BodySpec& body, const GridSpec& grid, const Vec2& lo, const Vec2& hi,
+                                       Inside inside) {
+  std::optional<Vec2> found;
+  for_each_seed_point(body, grid.min, grid.cell_size, lo, hi, [&](const Vec2& x) {
+    if (inside(x)) found = x;
+    return !found;
+  });
+  return found;
+}
+
+// Two bodies may touch, not share area: the particles of both would sit there, twice the mass.
+void check_body_overlaps(TableReader& t, const Scene& scene) {
+  const BodySpec& body = scene.bodies.back();
+  for (std::size_t i = 0; i + 1 < scene.bodies.size(); ++i) {
+    const BodySpec& other = scene.bodies[i];
+    Vec2 lo, hi;
+    other.shape.bounds(lo, hi);
+    if (const auto x = first_point_inside(body, scene.grid, lo, hi, [&](const Vec2& p) { return other.shape.contains(p); }))
+      t.fail(shape_key(t), fmt::format("body \"{}\" overlaps body \"{}\" (its particle at {} lies inside \"{}\"): "
+                                       "bodies may touch but not share area, where both would put their mass",
+                                       body.name, other.name, vec_text(*x), other.name));
+  }
+}
+
+// A body that starts inside a rigid body is pushed out of it in one step, with a huge, unphysical impulse.
+void check_rigid_overlaps(TableReader& t, const Scene& scene) {
+  const RigidBodySpec& rigid = scene.rigid_bodies.back();
+  const RigidPolygon outline(rigid.polygon, rigid.rounding_radius);
+  const Vec2 grow = Vec2::Constant(rigid.rounding_radius);
+  for (const BodySpec& body : scene.bodies) {
+    // A particle on the outline touches it (a punch whose rounding reaches the body's first particle row exactly).
+    const double tolerance = 1e-6 * scene.grid.cell_size / body.particles_per_cell;
+    Vec2 normal;
+    if (const auto x = first_point_inside(body, scene.grid, outline.lower() - grow, outline.upper() + grow,
+                                          [&](const Vec2& p) { return outline.signed_distance(p, normal) < -tolerance; }))
+      t.fail("polygon", fmt::format("rigid body \"{}\" overlaps body \"{}\" at the start (the body's particle at {} "
+                                    "lies inside it): place the rigid body outside the deformable bodies; it may touch "
+                                    "them",
+                                    rigid.name, body.name, vec_text(*x)));
+  }
+}
+
+// Frictional heat goes into the particles at the contact, whose temperature rises by heat / (m c).
+void check_friction_heat(TableReader& t, const Scene& scene) {
+  const RigidBodySpec& rigid = scene.rigid_bodies.back();
+  if (rigid.friction <= 0.0 || rigid.friction_heat_share <= 0.0) return;
+  for (const BodySpec& body : scene.bodies) {
+    const MaterialParameters& m = scene.materials[scene.material_index(body.material)];
+    if (m.specific_heat <= 0.0)
+      t.fail("friction", fmt::format("= {:g} heats the bodies it rubs (friction_heat_share = {:g}), but material \"{}\" "
+                                     "of body \"{}\" has no specific_heat (0 J/(kg K)): its temperature would become "
+                                     "infinite; give the material a specific_heat, or friction_heat_share = 0",
+                                     rigid.friction, rigid.friction_heat_share, m.name, body.name));
+  }
 }
 
 RigidBodySpec read_rigid_body(TableReader t, bool conduction) {
@@ -431,6 +518,7 @@ Scene read_scene_tables(TableReader& top) {
   for (TableReader& t : top.array_of_tables("body")) {
     scene.bodies.push_back(read_body(t, scene));
     claim_name(t, scene.bodies.back().name);
+    check_body_overlaps(t, scene);
   }
   if (scene.bodies.empty()) {
     if (top.has("body")) top.fail("body", "a scene needs at least one deformable body, got none");
@@ -439,6 +527,8 @@ Scene read_scene_tables(TableReader& top) {
   for (TableReader& t : top.array_of_tables("rigid_body")) {
     scene.rigid_bodies.push_back(read_rigid_body(t, scene.thermal.conduction));
     claim_name(t, scene.rigid_bodies.back().name);
+    check_rigid_overlaps(t, scene);
+    check_friction_heat(t, scene);
   }
   return scene;
 }

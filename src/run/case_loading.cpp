@@ -1,5 +1,7 @@
 #include "run/case_loading.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -20,6 +22,30 @@ Case embedded_case(std::string_view path, const std::vector<std::string>& overri
   throw InputError(std::string("the built-in ") + what + " is missing from this build");
 }
 
+// The explicit update is stable for dt <= cell / (wave speed + fastest velocity). The simulation checks a fixed step
+// against that with its particles; here it is checked from the scene, so that --check and load_case refuse it at the
+// key instead of the run after its result directory was made.
+void check_fixed_time_step(TableReader& top, const Scene& s) {
+  const double fixed = s.solver.fixed_time_step;
+  if (fixed <= 0.0) return;
+  double wave_speed = 0.0, speed = 0.0;
+  for (const BodySpec& b : s.bodies) {
+    wave_speed = std::max(wave_speed, s.materials.at(s.material_index(b.material)).p_wave_speed());
+    speed = std::max(speed, b.velocity.norm());
+  }
+  for (const RigidBodySpec& r : s.rigid_bodies) speed = std::max(speed, r.velocity.norm());
+  // Mass scaling slows the waves by the square root of the inertia factor.
+  const double limit =
+      s.grid.cell_size / (wave_speed / std::sqrt(std::max(1.0, s.solver.mass_scaling_factor)) + speed);
+  if (!(fixed > limit * (1.0 + 1e-12))) return;
+  top.table("solver").fail(
+      "fixed_time_step",
+      fmt::format("= {:g} s exceeds the stability limit of the explicit update at the start, cell / (wave speed + "
+                  "fastest velocity) = {:g} s: the run would blow up. Use fixed_time_step = 0 (the CFL step, {:g} s at "
+                  "solver.cfl = {:g}) or at most {:g} s",
+                  fixed, limit, s.solver.cfl * limit, s.solver.cfl, limit));
+}
+
 }  // namespace
 
 Case parse_case(std::string_view toml_text, const std::string& source_name, const std::vector<std::string>& overrides) {
@@ -33,6 +59,7 @@ Case parse_case(std::string_view toml_text, const std::string& source_name, cons
     read_cutting_process(top, c);
   }
   top.reject_unknown_keys();
+  check_fixed_time_step(top, c.scene);
   c.scene.source_file = source_name;
   return c;
 }

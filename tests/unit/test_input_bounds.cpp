@@ -80,6 +80,9 @@ TEST(InputBounds, IssueReportsAreInputErrorsNamingKeyRangeAndValue) {
   EXPECT_NE(m.find("key 'cutting.edge_radius': must be a length >= 0 m and below 10 uncut chip thicknesses"),
             std::string::npos) << m;
   EXPECT_NE(m.find("got -1e-06"), std::string::npos) << m;
+  m = cutting_error({"cutting.cell_size=1e-300"});
+  EXPECT_NE(m.find("key 'cutting.cell_size': must be 0 (= t0/10) or a length in [1e-9, uncut_chip_thickness/2] m"),
+            std::string::npos) << m;
   m = cutting_error({"cutting.friction=2.1"});
   EXPECT_TRUE(m.ends_with("got 2.1")) << m;
   m = error_of(kDisk, {"solver.end_time=1e308"});
@@ -140,9 +143,14 @@ TEST(InputBounds, StepEstimateRefusesRunsThatCannotFinish) {
 }
 
 // A fixed step beyond the wave-speed limit blew the colliding disks up (energy residual -626) and was reported as
-// a particle leaving the grid: it is refused when the simulation is built, with the limit in the message.
+// a particle leaving the grid: it is an input error at the key (so `run --check` and Python's load_case refuse it
+// too, not the run after making its result directory), and a scene built in code is refused by the simulation.
 TEST(InputBounds, AFixedTimeStepBeyondStabilityIsRefusedWithTheLimit) {
-  const Scene unstable = parse_case(kDisk, "case.toml", {"solver.fixed_time_step=0.5"}).scene;
+  const std::string m = error_of(kDisk, {"solver.fixed_time_step=0.5"});
+  EXPECT_NE(m.find("key 'solver.fixed_time_step': = 0.5 s exceeds the stability limit"), std::string::npos) << m;
+  EXPECT_NE(m.find("at most"), std::string::npos) << m;
+  Scene unstable = parse_case(kDisk, "case.toml", {"solver.fixed_time_step=0.01"}).scene;
+  unstable.solver.fixed_time_step = 0.5;
   try {
     Simulation sim(unstable);
     ADD_FAILURE() << "a fixed step of 0.5 s was accepted";

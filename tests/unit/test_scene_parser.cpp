@@ -13,6 +13,8 @@
 #include <numbers>
 #include <sstream>
 
+#include <fmt/format.h>
+
 #include "io/input_error.hpp"
 #include "io/material_library.hpp"
 #include "run/case_loading.hpp"
@@ -189,6 +191,55 @@ TEST(SceneParser, IntegersAreAcceptedAsNumbers) {
 }
 
 // --- validation -------------------------------------------------------------------------------
+
+// A shape between the particle sub-grid's points (spacing 0.05 here) got no particle and the run went on without it.
+TEST(SceneValidation, ABodyThatGetsNoParticleIsAnError) {
+  const std::string sheet = kBase + "[[body]]\nname = \"sheet\"\nmaterial = \"m\"\n"
+                                    "rectangle = { min = [0.6, 0.6], max = [0.9, 0.61] }\n";
+  expect_error(sheet, "rectangle = { min = [0.6", {"key 'body[1].rectangle'", "body \"sheet\" gets no particle"});
+  expect_error(edit("rectangle = { min = [0.2, 0.2], max = [0.4, 0.4] }", "disk = { center = [0.5, 0.5], radius = 0.01 }"),
+               "disk", {"key 'body[0].disk'", "gets no particle", "spacing grid.cell_size / particles_per_cell = 0.05 m"});
+  // One sub-grid point is enough: a sheet across a row of them.
+  EXPECT_EQ(error_of(kBase + "[[body]]\nname = \"sheet\"\nmaterial = \"m\"\n"
+                             "rectangle = { min = [0.6, 0.62], max = [0.9, 0.63] }\n"),
+            "");
+}
+
+// Both bodies' particles would sit in the shared area (twice the mass); a body inside a rigid one is expelled in a
+// step. Touching is fine.
+TEST(SceneValidation, BodiesThatOverlapAtTheStartAreAnError) {
+  expect_error(kBase + "[[body]]\nname = \"b2\"\nmaterial = \"m\"\nrectangle = { min = [0.3, 0.3], max = [0.6, 0.6] }\n",
+               "min = [0.3, 0.3]", {"key 'body[1].rectangle'", "body \"b2\" overlaps body \"b\""});
+  EXPECT_EQ(error_of(kBase + "[[body]]\nname = \"b2\"\nmaterial = \"m\"\n"
+                             "rectangle = { min = [0.4, 0.2], max = [0.6, 0.4] }\n"),
+            "");
+  const std::string wall = "[[rigid_body]]\nname = \"wall\"\npolygon = [[{}, 0.0], [0.9, 0.0], [0.9, 1.0], [{}, 1.0]]\n";
+  const auto with_wall = [&](const char* x) { return kBase + fmt::format(fmt::runtime(wall), x, x); };
+  expect_error(with_wall("0.3"), "polygon = [[0.3",
+               {"key 'rigid_body[0].polygon'", "rigid body \"wall\" overlaps body \"b\" at the start"});
+  EXPECT_EQ(error_of(with_wall("0.4")), "");
+  // The rounding radius grows the shape: 0.04 m left of a wall at 0.41 reaches the body's last particles at 0.375.
+  expect_error(with_wall("0.41") + "rounding_radius = 0.04\n", "polygon = [[0.41", {"overlaps body \"b\""});
+}
+
+// Frictional heat into a material without heat capacity made the temperature infinite at the first contact.
+TEST(SceneValidation, FrictionalHeatNeedsASpecificHeat) {
+  const std::string wall = kBase + "[[rigid_body]]\nname = \"wall\"\npolygon = [[0.5, 0.0], [0.9, 0.0], [0.9, 1.0], "
+                                   "[0.5, 1.0]]\nfriction = 0.3\n";
+  expect_error(edit("library = \"elastic-unit\"", "library = \"elastic-unit\"\nspecific_heat = 0.0", wall), "friction = 0.3",
+               {"key 'rigid_body[0].friction'", "material \"m\" of body \"b\" has no specific_heat",
+                "friction_heat_share = 0"});
+  EXPECT_EQ(error_of(edit("library = \"elastic-unit\"", "library = \"elastic-unit\"\nspecific_heat = 0.0",
+                          wall + "friction_heat_share = 0.0\n")),
+            "");
+  EXPECT_EQ(error_of(wall), "");  // elastic-unit's specific heat is 1 J/(kg K)
+}
+
+// A side's temperature acts through conduction only; without it the value was ignored without a word.
+TEST(SceneValidation, AFixedSideTemperatureNeedsConduction) {
+  expect_error(kBase + "[thermal]\nleft = 500.0\n", "left = 500",
+               {"key 'thermal.left'", "conduction update, which is off", "thermal.conduction = true"});
+}
 
 TEST(SceneValidation, ParticlesPerCellOutOfRange) {
   const std::string text = edit("rectangle =", "particles_per_cell = 0\nrectangle =");
@@ -410,7 +461,8 @@ TEST(SceneValidation, MissingFileNamesThePath) {
 TEST(SceneOverrides, SetValuesOfEveryKind) {
   const Scene s = parse_scene(kBase, "case.toml",
                               {"solver.cfl=0.3", "body[0].velocity=[1.0, -2]", "solver.scheme=usl",
-                               "title=a bare string", "thermal.left=300", "output.vtu=false",
+                               "title=a bare string", "thermal.left=300", "thermal.conduction=true",
+                               "material[0].specific_heat=1e3", "output.vtu=false",
                                "material[0].youngs_modulus=2e3", "body.0.particles_per_cell=4"});
   EXPECT_DOUBLE_EQ(s.solver.cfl, 0.3);
   EXPECT_EQ(s.bodies[0].velocity, Vec2(1.0, -2.0));
