@@ -8,6 +8,7 @@
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
+#include "app/path_option.hpp"
 #include "analysis/chip_analysis.hpp"
 #include "run/run_case.hpp"
 #include "io/directory_lock.hpp"
@@ -129,7 +130,7 @@ void add_analyze_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "analyze", "Chip analysis of a cutting run's snapshot (morphology, segmentation, shear angle, temperatures); "
                  "merges the results of the last snapshot into its summary.json");
-  cmd->add_option("result_dir", options->dir, "Result directory of a cutting run")->required();
+  cmd->add_option("result_dir", options->dir, "Result directory of a cutting run")->required()->check(non_empty_path());
   cmd->add_option("--snapshot", options->snapshot, "Snapshot number N (snapshots/particles_N.vtu) or 'last'")
       ->capture_default_str();
   cmd->callback([options] { throw CLI::RuntimeError(analyze_result_directory(options->dir, options->snapshot)); });

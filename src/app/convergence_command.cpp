@@ -4,6 +4,7 @@
 #include <iostream>
 #include <memory>
 
+#include "app/path_option.hpp"
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
 #include "run/run_options.hpp"
@@ -41,7 +42,7 @@ void add_convergence_command(CLI::App& app) {
       "Richardson extrapolation of a resolution sweep (mpmcut sweep --cells-per-feed with three or more values) "
       "from its sweep.csv: observed order, extrapolated value and GCI of Fc, Ft, t0/tc and the energy partition "
       "per condition; writes grid_convergence.csv and grid_convergence.md into the directory");
-  c->add_option("dir", *dir, "Sweep directory (holds sweep.csv)")->required();
+  c->add_option("dir", *dir, "Sweep directory (holds sweep.csv)")->required()->check(non_empty_path());
   c->callback([dir]() {
     int code = 0;
     try {

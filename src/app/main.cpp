@@ -21,6 +21,7 @@
 #include "app/validate_command.hpp"
 #include "run/run_case.hpp"
 #include "app/stop_signal.hpp"
+#include "app/path_option.hpp"
 #include "io/run_estimate.hpp"
 #include "io/input_error.hpp"
 #include "cutting/cutting_case.hpp"
@@ -88,7 +89,7 @@ int main(int argc, char** argv) {
   bool no_progress = false;
   CLI::App* run = app.add_subcommand("run", "Run a case file (or the built-in default case when none is given)");
   run->add_option("case", case_file, "Case file (TOML), see docs/input.md; default: the built-in Ti-6Al-4V cut (cases/ti64_default.toml)");
-  run->add_option("-o,--out", out_dir, "Result directory (default: results/<case name>)");
+  run->add_option("-o,--out", out_dir, "Result directory (default: results/<case name>)")->check(non_empty_path());
   run->add_option("-t,--threads", run_options.threads, "OpenMP threads (default: all cores)")->check(CLI::Range(1, kMaxThreads));
   run->add_option("-s,--set", overrides, "Override an input key, e.g. --set solver.cfl=0.3 (repeatable)");
   run->add_flag("-f,--force", run_options.force, "Overwrite an existing result directory");
@@ -129,7 +130,7 @@ int main(int argc, char** argv) {
   bool resume_no_progress = false;
   CLI::App* resume = app.add_subcommand(
       "resume", "Continue a stopped run (killed, interrupted, failed to write) from its last valid checkpoint");
-  resume->add_option("result_dir", resume_dir, "Result directory of the run")->required();
+  resume->add_option("result_dir", resume_dir, "Result directory of the run")->required()->check(non_empty_path());
   resume->add_option("-t,--threads", resume_options.threads, "OpenMP threads (default: those of the original run)")
       ->check(CLI::Range(1, kMaxThreads));
   resume->add_option("--checkpoint-every", resume_checkpoint_every, "As for run (default: that of the original run)")

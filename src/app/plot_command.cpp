@@ -1,5 +1,6 @@
 #include "app/plot_command.hpp"
 #include "app/stop_signal.hpp"
+#include "app/path_option.hpp"
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -182,7 +183,7 @@ void add_plot_command(CLI::App& app) {
   CLI::App* plot = app.add_subcommand(
       "plot", "Draw PNG pictures of a result directory: the chip coloured by temperature, plastic strain and "
               "damage with the tool, and the force history (needs /usr/bin/python3 with matplotlib and meshio)");
-  plot->add_option("result_dir", options->result_dir, "Result directory of a run")->required();
+  plot->add_option("result_dir", options->result_dir, "Result directory of a run")->required()->check(non_empty_path());
   plot->add_option("--snapshots", options->snapshots,
                    "Snapshots to draw: last (default), all, or snapshot numbers N,M,... (the last is always drawn)");
   plot->callback([options]() {

@@ -16,6 +16,7 @@
 
 #include "app/plot_command.hpp"
 #include "app/stop_signal.hpp"
+#include "app/path_option.hpp"
 #include "run/run_case.hpp"
 #include "studies/grid_convergence_report.hpp"
 #include "studies/task_farm.hpp"
@@ -463,7 +464,7 @@ void add_sweep_command(CLI::App& app) {
       ->delimiter(',')->check(CLI::Range(2, 200));
   sweep->add_option("-j,--jobs", o->jobs, "Cases run at the same time (default: cores / threads)")->check(CLI::Range(1, 1024));
   sweep->add_option("-t,--threads", o->threads, "OpenMP threads of each case (default: 1)")->check(CLI::Range(1, kMaxThreads));
-  sweep->add_option("-o,--out", o->out_dir, "Sweep directory (default: results/sweep_<case name>)");
+  sweep->add_option("-o,--out", o->out_dir, "Sweep directory (default: results/sweep_<case name>)")->check(non_empty_path());
   sweep->add_option("-s,--set", o->overrides, "Override an input key of every case, as for run (repeatable)");
   sweep->add_option("--vary", o->vary,
                     "One more grid dimension: KEY=V1,V2,... over any key --set takes, e.g. "

@@ -10,6 +10,7 @@
 #include "app/sweep_command.hpp"
 #include "app/validation_conditions.hpp"
 #include "app/validation_report.hpp"
+#include "app/path_option.hpp"
 #include "cutting/input_plausibility.hpp"
 #include "io/atomic_file.hpp"
 #include "cutting/input_plausibility.hpp"
@@ -267,7 +268,7 @@ void add_validate_command(CLI::App& app) {
   v->add_flag("--list", o->list,
               "Print the selected conditions with cell size, cut length and estimated cost (particles x steps, "
               "core-hours) and whether --out holds them complete; writes their case files, runs nothing");
-  v->add_option("-o,--out", o->out_dir, "Output directory (default: results/validation or results/validation_quick)");
+  v->add_option("-o,--out", o->out_dir, "Output directory (default: results/validation or results/validation_quick)")->check(non_empty_path());
   v->add_option("--records", o->records_dir,
                 "Directory of run records (scene.toml, forces.csv, summary.json of each complete condition; small, "
                 "meant to be committed): conditions complete there with the same scene are reported without running, "

@@ -52,11 +52,17 @@ std::string describe_value(const toml::node& node) {
   if (auto s = node.value_exact<std::string>()) return "\"" + *s + "\"";
   // -1e-06, not toml++'s -9.9999999999999995e-07.
   if (auto d = node.value_exact<double>()) return toml_float(*d);
-  std::ostringstream os;
+  // Element by element, on one line ("[0.5, nan]"; toml++ printed nested arrays over several lines).
+  if (const toml::array* a = node.as_array()) {
+    std::string text = "[";
+    for (std::size_t i = 0; i < a->size(); ++i) text += (i > 0 ? ", " : "") + describe_value(*a->get(i));
+    text += "]";
+    if (text.size() > 60) text = fmt::format("{} of {} elements", describe_type(node), a->size());
+    return text;
+  }
+  std::ostringstream os;  // integers, booleans, dates: short
   node.visit([&](const auto& v) { os << v; });
-  std::string text = os.str();
-  if (text.size() > 60) text = describe_type(node) + " of " + std::to_string(node.as_array()->size()) + " elements";
-  return text;
+  return os.str();
 }
 
 TableReader::TableReader(const toml::table& table, std::string path, std::shared_ptr<const InputSource> source)

@@ -102,6 +102,8 @@ class PyRun {
     return finish();
   }
 
+  // Raises RuntimeError where the outputs could not be written (the CLI's exit 4): a Python caller checks no
+  // exit code, and a returned "failed" beside a full disk read like a failed simulation.
   std::string finish() {
     if (!exit_code_) {
       const Stepping busy(*this, "finish");
@@ -109,12 +111,16 @@ class PyRun {
       ended_ = true;
       exit_code_ = run_->finish();
     }
+    if (*exit_code_ == kExitOutputError)
+      throw std::runtime_error(fmt::format("Run: the results in {} could not be written: {}", run_->root().string(),
+                                           run_->final_message()));
     return status();
   }
 
+  // The run's own status once finished: summary.json may be the stale one where writing it failed.
   std::string status() const {
     if (!exit_code_) return run_status::running;
-    return read_summary(run_->root() / "summary.json").status;
+    return run_->final_status();
   }
 
   void stop() { run_->stop_token().request_stop(); }

@@ -122,7 +122,8 @@ bool CaseRun::advance() {
       sim_.step(target - sim_.time());
       if (tuner_) tuner_->after_step();
       out.after_step();
-      if (hist_dt <= 0 || sim_.time() >= next_history_ - eps) {
+      // The last step is a history row too: an interval that does not divide the end time left the final state out.
+      if (hist_dt <= 0 || sim_.time() >= next_history_ - eps || finished()) {
         out.history_row();
         out.rigid_row();
         while (hist_dt > 0 && next_history_ <= sim_.time() + eps) next_history_ += hist_dt;
@@ -228,8 +229,12 @@ int CaseRun::finish() {
     // Through the struct, so that what is written is what the readers read.
     write_summary(root_ / "summary.json", summary_from_json(sections));
   } catch (const std::exception& e) {
+    // summary.json could not be written: what it holds on disk is stale, and the run is not complete.
     std::cerr << "error: " << e.what() << "\n";
     if (!message_.empty()) std::cerr << "error: " << message_ << "\n";
+    status_ = run_status::failed;
+    message_ = std::string("output error: ") + e.what() + (message_.empty() ? "" : "; " + message_);
+    exit_code_ = kExitOutputError;
     return kExitOutputError;
   }
   if (!message_.empty())

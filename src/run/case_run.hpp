@@ -65,6 +65,9 @@ class CaseRun {
   void flush_outputs() { out_->flush(); }
   // The summary as it would be written now (status "running" while the run goes on).
   RunSummary summary() const;
+  // Once finish() returned: the run's status and message, also where summary.json could not be written.
+  const char* final_status() const { return status_; }
+  const std::string& final_message() const { return message_; }
 
  private:
   DirectoryLock lock_;  // no other run writes into root_ while this one does

@@ -106,7 +106,10 @@ std::unique_ptr<CaseRun> open_run(const Case& c, const RunOptions& options) {
     mark_failed_before_stepping(c, root, threads, e.what());
     throw RunOpenError(e.what(), kExitInputError);
   } catch (const std::exception& e) {
-    throw RunOpenError(std::string("output error: ") + e.what(), kExitOutputError);
+    // The first snapshot or history row could not be written: the directory must not read "running".
+    const std::string message = std::string("output error: ") + e.what();
+    mark_failed_before_stepping(c, root, threads, message);
+    throw RunOpenError(message, kExitOutputError);
   }
   return run;
 }

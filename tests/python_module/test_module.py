@@ -259,3 +259,28 @@ def test_grid_convergence_reproduces_celik_2008_and_rejects_bad_grids():
     assert osc["behaviour"] == "oscillatory" and osc["observed_order"] is None
     with pytest.raises(ValueError):
         mpmcut.grid_convergence(2.0, 1.0, 1.0, 1.0, 4.0, 1.0)
+
+
+def test_a_write_failure_raises_and_the_status_says_failed(tmp_path, quick_case, short):
+    """Outputs that cannot be written (here: an 8 kB file-size limit, below the history and the final summary)
+    came back as the status "running" from run(), with summary.json left at "running"."""
+    import resource
+    import sys
+    script = f"""
+import mpmcut
+run = mpmcut.Run(mpmcut.load_case({str(quick_case)!r}, {dict(short, **{"output.vtu": False})!r}),
+                 {str(tmp_path / "limited")!r}, threads=1)
+try:
+    run.run()
+except RuntimeError as e:
+    print("raised:", e)
+print("status:", run.status, run.exit_code)
+"""
+
+    def limit_file_size():
+        resource.setrlimit(resource.RLIMIT_FSIZE, (8 * 1024, 8 * 1024))
+
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, preexec_fn=limit_file_size,
+                          timeout=300)
+    assert "raised: Run: the results in" in done.stdout and "could not be written" in done.stdout, done
+    assert "status: failed 4" in done.stdout, done

@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
+#include <sstream>
 #include <fstream>
 
 #include <fmt/core.h>
@@ -202,6 +204,40 @@ TEST_F(LongRuns, WriteErrorKeepsLastCheckpointAndResumeCompletes) {
   r = resume("limited");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   expect_identical_outputs(out("reference"), out("limited"));
+}
+
+// The first snapshot cannot be written (50 kB: summary.json and scene.toml fit, a ~600 kB snapshot does not): the
+// directory said "running" without a message and looked like a run in progress.
+TEST_F(LongRuns, AWriteErrorAtTheFirstSnapshotMarksTheRunFailed) {
+  const CliResult r = run("first", {}, 50 * 1024);
+  EXPECT_EQ(r.exit_code, 4) << r.output;
+  EXPECT_NE(r.output.find("File too large"), std::string::npos) << r.output;
+  EXPECT_EQ(summary_status(out("first")), "failed");
+  const nlohmann::json summary = nlohmann::json::parse(read_file(out("first") / "summary.json"));
+  EXPECT_NE(summary.value("message", "").find("output error"), std::string::npos) << summary.dump(2);
+}
+
+// A history interval that does not divide the end time (0.4 of 1.5 us) left the final state without a row.
+TEST_F(LongRuns, TheHistoryEndsWithARowAtTheEndTime) {
+  const CliResult r = run("history", {"--set", "output.history_interval=0.4e-6", "--no-plots"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::istringstream rows(read_file(out("history") / "history.csv"));
+  std::vector<double> times;
+  for (std::string line; std::getline(rows, line);)
+    if (!line.empty() && std::isdigit(static_cast<unsigned char>(line[0]))) times.push_back(std::stod(line));
+  ASSERT_EQ(times.size(), 5u);  // 0, 0.4, 0.8, 1.2 and 1.5 us
+  EXPECT_NEAR(times.back(), 1.5e-6, 1e-15);
+}
+
+// A directory option given as an empty path ran into results/<case> (run) or the current directory: refused.
+TEST_F(LongRuns, AnEmptyDirectoryOptionIsRefused) {
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"run", case_file_.string(), "--out", ""}, {"resume", ""}, {"analyze", ""},
+        {"plot", ""}, {"sweep", case_file_.string(), "--speeds", "1", "--out", ""}, {"convergence", ""}}) {
+    const CliResult r = run_mpmcut(args, dir_ / "empty.log");
+    EXPECT_EQ(r.exit_code, 2) << args[0] << ": " << r.output;
+    EXPECT_NE(r.output.find("an empty path"), std::string::npos) << args[0] << ": " << r.output;
+  }
 }
 
 // An existing result directory is not overwritten without --force; with --force it is, but

@@ -20,6 +20,9 @@ def _toml_value(value):
     """A Python value as the TOML text a --set override takes."""
     if isinstance(value, bool):
         return "true" if value else "false"
+    if isinstance(value, int) and not -2**63 <= value < 2**63:
+        # TOML's integers are 64-bit: the text would not parse as a number and be taken for a bare string.
+        raise ValueError(f"{value} is outside the 64-bit integer range of a case value (±9.2e18)")
     if isinstance(value, (int, float)):
         return repr(value)
     if isinstance(value, str):
