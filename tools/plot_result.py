@@ -448,7 +448,11 @@ def main(argv):
         if snapshot_is_empty(path):  # meshio cannot read a VTU without points (a run that lost every particle)
             print(f"note: {os.path.basename(path)} holds no particles: no chip picture of it", file=sys.stderr)
             continue
-        written += plot_snapshot(d, index, time_s, path, tool, process, material)
+        try:
+            written += plot_snapshot(d, index, time_s, path, tool, process, material)
+        except (Exception, SystemExit) as e:  # a damaged VTU (meshio prints "Error: ..." and exits for some)
+            print(f"\nerror: cannot read {path} ({'see above' if isinstance(e, SystemExit) else e}): the run's results are damaged", file=sys.stderr)
+            return 2
     f = plot_forces(d, summary, process, tool)
     if f:
         written.append(f)
@@ -457,7 +461,7 @@ def main(argv):
         written.append(f)
     if not written:
         print("error: nothing to plot", file=sys.stderr)
-        return 1
+        return 2
     return 0
 
 

@@ -20,6 +20,7 @@
 #include "run/case_loading.hpp"
 #include "run/run_outputs.hpp"
 #include "run/run_options.hpp"
+#include "run/run_summary.hpp"
 
 namespace mpmcut {
 
@@ -191,6 +192,14 @@ void add_plot_command(CLI::App& app) {
       (void)load_cutting_result_scene(options->result_dir, "the pictures are of a cut's chip, tool and forces; open "
                                                             "its particles.pvd in ParaView instead");
       check_snapshot_choice(options->result_dir, options->snapshots);
+      // The pictures of the steady window and the profile come from the summary: a damaged one is the user's to fix.
+      try {
+        (void)read_summary(std::filesystem::path(options->result_dir) / "summary.json");
+      } catch (const std::exception& e) {
+        throw InputError(fmt::format("{}/summary.json cannot be read ({}): the run's results are damaged; rerun it "
+                                     "or resume it",
+                                     options->result_dir, e.what()));
+      }
     } catch (const InputError& e) {
       std::cerr << "error: " << e.what() << "\n";
       throw CLI::RuntimeError(kExitInputError);

@@ -140,7 +140,7 @@ std::string energy_residual_warning(double relative_residual) {
   if (!(std::abs(relative_residual) > kEnergyResidualWarning)) return "";
   return fmt::format("the energy balance leaves {:+.1f} % of the energy in unaccounted for (normally 0.5-1 %, warned "
                      "beyond {:g} %): the run is not resolved well enough for its numbers to be trusted (too few "
-                     "cells or particles across the chip, a speed or a time step at its limits); refine it",
+                     "cells or particles across the chip or the body, a speed or a time step at its limits); refine it",
                      100.0 * relative_residual, 100.0 * kEnergyResidualWarning);
 }
 

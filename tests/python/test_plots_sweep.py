@@ -108,6 +108,20 @@ def main(binary, scratch):
     p = subprocess.run([binary, "plot", gone], capture_output=True, text=True, timeout=60)
     if p.returncode != 2 or "is missing" not in p.stderr or last not in p.stderr or "Traceback" in p.stderr:
         fail(f"plot with a deleted snapshot: exit {p.returncode}: {p.stderr}")
+    # A damaged snapshot or summary: exit 2 naming it (exit 1 after meshio's message; a broken summary was drawn
+    # around with a warning, exit 0).
+    damaged = os.path.join(scratch, "snapshot_damaged")
+    shutil.copytree(case_dir, damaged)
+    with open(os.path.join(damaged, "snapshots", last), "w") as f:
+        f.write("garbage\n")
+    p = subprocess.run([binary, "plot", damaged], capture_output=True, text=True, timeout=120)
+    if p.returncode != 2 or "cannot read" not in p.stderr or last not in p.stderr or "Traceback" in p.stderr:
+        fail(f"plot with a damaged snapshot: exit {p.returncode}: {p.stderr}")
+    with open(os.path.join(damaged, "summary.json"), "w") as f:
+        f.write("{\n")
+    p = subprocess.run([binary, "plot", damaged], capture_output=True, text=True, timeout=60)
+    if p.returncode != 2 or "summary.json cannot be read" not in p.stderr:
+        fail(f"plot with a damaged summary.json: exit {p.returncode}: {p.stderr}")
     # An earlier snapshot's chip analysis is printed, not merged into the summary of the final state.
     with open(os.path.join(case_dir, "summary.json")) as f:
         before = f.read()
