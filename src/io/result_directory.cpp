@@ -66,6 +66,12 @@ ResultDirectory ResultDirectory::open(const fs::path& dir, bool force) {
     const bool empty = fs::is_empty(dir, ec);
     if (ec) fail(dir, "cannot list its contents", ec);
     if (!empty) {
+      // A directory that --force would not clear either is told so at once.
+      if (!force && !fs::exists(dir / "summary.json"))
+        throw std::runtime_error(fmt::format(
+            "result directory '{}' exists, is not empty and has no summary.json, so it is not an mpmcut result; "
+            "--force does not delete such a directory's contents. Choose another --out.",
+            dir.string()));
       if (!force) {
         throw std::runtime_error(fmt::format(
             "result directory '{}' already exists; use --force to overwrite", dir.string()));

@@ -166,9 +166,12 @@ std::unique_ptr<CaseRun> open_resumed_run(const RunOptions& options) {
     throw refuse(e.what());
   }
   if (status == run_status::complete && !options.force) {
-    throw refuse(
-        "its run is complete (summary.json status \"complete\"); there is nothing to resume. Use --force to "
-        "recompute from its last checkpoint to the end");
+    std::error_code ec;
+    throw refuse(fs::exists(root / "checkpoints" / "latest", ec)
+                     ? "its run is complete (summary.json status \"complete\"); there is nothing to resume. Use "
+                       "--force to recompute from its last checkpoint to the end"
+                     : "its run is complete (summary.json status \"complete\") and kept no checkpoint; there is "
+                       "nothing to resume (run the case again for new results)");
   }
   if (status == run_status::failed)
     std::cerr << "note: the run had failed (see summary.json \"message\"); continuing from its last checkpoint\n";

@@ -260,6 +260,11 @@ TEST_F(LongRuns, ExistingResultDirectoryNeedsForce) {
   EXPECT_EQ(r.exit_code, 4) << r.output;
   EXPECT_NE(r.output.find("does not look like an mpmcut result"), std::string::npos) << r.output;
   EXPECT_EQ(read_file(out("not_a_result") / "thesis.tex"), "precious");
+  // Without --force it says at once that --force would not help (it suggested --force, which then refused).
+  r = run("not_a_result", {"--set", "solver.max_steps=5"});
+  EXPECT_EQ(r.exit_code, 4) << r.output;
+  EXPECT_NE(r.output.find("is not an mpmcut result; --force does not delete"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("use --force"), std::string::npos) << r.output;
 }
 
 // An output directory that cannot be created (a path under a regular file; the tests may run
@@ -281,6 +286,12 @@ TEST_F(LongRuns, ResumeRefusesCompleteRunsChangedScenesAndNonResults) {
   EXPECT_NE(r.output.find("its run is complete"), std::string::npos) << r.output;
   r = resume("done", {"--force"});
   EXPECT_EQ(r.exit_code, 0) << r.output;
+  // Without a checkpoint --force cannot help either: the refusal says so (it suggested --force).
+  r = run("no_checkpoint", {"--set", "solver.max_steps=30", "--checkpoint-every", "off"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  r = resume("no_checkpoint");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("kept no checkpoint"), std::string::npos) << r.output;
 
   // A scene.toml edited after the run: the checkpoint's scene hash no longer matches.
   std::string scene = read_file(out("done") / "scene.toml");
