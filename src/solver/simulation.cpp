@@ -222,23 +222,29 @@ void Simulation::remove_escaped_particles() {
   for (std::size_t p = 0; p < P.size(); ++p) {
     const Vec2 x = P.position[p];
     const bool inside = x.x() >= lo.x() && x.x() <= hi.x() && x.y() >= lo.y() && x.y() <= hi.y();
-    if (inside || !std::isfinite(x.x()) || !std::isfinite(x.y())) {
-      keep.push_back(p);
-    } else {
-      ++state_.removed_particles;
-      state_.removed_mass += P.mass[p];
-      // Their energy leaves the ledger's kinetic and elastic sums; booked here so the balance closes.
-      state_.energy.removed_energy += 0.5 * inertia_factor_ * P.mass[p] * P.velocity[p].squaredNorm() +
-                                      materials_[P.material[p]]->elastic_energy(P, p);
-    }
+    if (inside || !std::isfinite(x.x()) || !std::isfinite(x.y())) keep.push_back(p);
   }
-  // Nothing left to simulate is not a result: a run would go on to a "complete" end with zero forces.
+  // Nothing left to simulate is not a result: a run would go on to a "complete" end with zero forces. The last
+  // particles stay (the failure's snapshot shows them) and are not counted as removed: particles + removed_particles
+  // is the count the run started with.
   if (keep.empty() && P.size() > 0)
     throw SimulationError(fmt::format("every particle has left the grid domain by step {}, time {:.6g} s ({} removed "
-                                      "in all): nothing is left to simulate (is a body placed outside the grid, or "
-                                      "thrown out of it?)",
-                                      state_.step, state_.time, state_.removed_particles));
-  if (keep.size() != P.size()) particles_.permute(keep);
+                                      "before, the last {} now outside it): nothing is left to simulate (is a body "
+                                      "placed outside the grid, or thrown out of it?)",
+                                      state_.step, state_.time, state_.removed_particles, P.size()));
+  if (keep.size() == P.size()) return;
+  for (std::size_t p = 0, k = 0; p < P.size(); ++p) {
+    if (k < keep.size() && keep[k] == p) {
+      ++k;
+      continue;
+    }
+    ++state_.removed_particles;
+    state_.removed_mass += P.mass[p];
+    // Their energy leaves the ledger's kinetic and elastic sums; booked here so the balance closes.
+    state_.energy.removed_energy += 0.5 * inertia_factor_ * P.mass[p] * P.velocity[p].squaredNorm() +
+                                    materials_[P.material[p]]->elastic_energy(P, p);
+  }
+  particles_.permute(keep);
 }
 
 void Simulation::check_guards() const {
