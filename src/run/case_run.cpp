@@ -176,7 +176,8 @@ void CaseRun::output_failed(const std::exception& e) {
 
 int CaseRun::finish() {
   begin();
-  if (exit_code_ == kExitComplete && !finished()) stopped(kEndedByCaller);  // finished early by a library caller
+  // Finished early by a library caller: after a stop request (Ctrl-C in Python, Run.stop()) it reads as the CLI's.
+  if (exit_code_ == kExitComplete && !finished()) stopped(stop_->stop_requested() ? kStopRequested : kEndedByCaller);
   const SolverSpec& solver = sim_.scene().solver;
   if (exit_code_ == kExitComplete && sim_.time() < solver.end_time - 1e-12 * solver.end_time)  // ended by max_steps
     message_ = fmt::format("ended at solver.max_steps = {} at t = {:.6g} s, before solver.end_time = {:.6g} s: the "

@@ -240,6 +240,8 @@ def test_ctrl_c_stops_cleanly_then_raises(tmp_path, quick_case, where):
     with pytest.raises(KeyboardInterrupt):
         run.run(interrupt_in_callback if where == "callback" else interrupt_from_outside)
     assert run.status == "interrupted" and run.exit_code == 130
+    # As the CLI's SIGINT says it (it read "ended by the caller", the words of an early finish()).
+    assert run.summary()["message"].startswith("stopped on request"), run.summary()["message"]
     assert 20 <= run.step_count < 17566  # stopped long before the end
     assert run.summary()["last_checkpoint"].startswith("checkpoints/")
     resumed = mpmcut.Run.resume(run.out, threads=1)
