@@ -254,10 +254,10 @@ ChipAnalysis analyze_chip(const Particles& p, const ChipAnalysisSetup& s) {
                                                            a.profile.thickness_m.begin() + measured)
                                        : 0.0;
   if (a.area_mean_thickness_m && *a.area_mean_thickness_m > thickest + 2.0 * d) {
-    a.profile_note += fmt::format("{}the thickness by area (t_A {:.3g} um) exceeds the thickest cross-section it "
-                                  "averages over ({:.3g} um): a chip curled too tightly for its area rule; t_A is "
-                                  "left out",
-                                  a.profile_note.empty() ? "" : "; ", *a.area_mean_thickness_m * 1e6, thickest * 1e6);
+    a.area_mean_thickness_note = fmt::format("the thickness by area (t_A {:.3g} um) exceeds the thickest cross-section "
+                                             "it averages over ({:.3g} um): a chip curled too tightly for its area "
+                                             "rule; t_A is left out",
+                                             *a.area_mean_thickness_m * 1e6, thickest * 1e6);
     a.area_mean_thickness_m.reset();
   }
   if (a.area_mean_thickness_m && *a.area_mean_thickness_m > 0.0)
@@ -425,6 +425,8 @@ nlohmann::json chip_json(const ChipAnalysis& a) {
   j["segmentation_frequency_Hz"] = optional_json(a.segmentation_frequency_Hz);
   j["chip_thickness_ratio"] = optional_json(a.chip_thickness_ratio);
   j["area_mean_thickness_m"] = optional_json(a.area_mean_thickness_m);
+  j["area_mean_thickness_note"] =
+      a.area_mean_thickness_note.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.area_mean_thickness_note);
   j["chip_thickness_ratio_from_area"] = optional_json(a.chip_thickness_ratio_from_area);
   j["shear_angle_from_ratio_deg"] = optional_json(a.shear_angle_from_ratio_deg);
   j["chip_velocity_m_per_s"] = optional_json(a.chip_velocity_m_per_s);
@@ -489,6 +491,7 @@ std::string chip_summary_text(const ChipAnalysis& a) {
                      a.profile.start_m * 1e6, a.profile.position_m(a.steady_samples - 1) * 1e6,
                      a.profile.position_m(a.profile.thickness_m.size() - 1) * 1e6);
   if (!a.profile_note.empty()) s += "  note: " + a.profile_note + "\n";
+  if (!a.area_mean_thickness_note.empty()) s += "  note: " + a.area_mean_thickness_note + "\n";
   if (!a.resolution_note.empty()) s += "  note: " + a.resolution_note + "\n";
   return s;
 }

@@ -121,6 +121,9 @@ struct ChipAnalysis {
   // and t0 over it. Equal to the profile's mean where the chip is whole; larger where cross-sections stop at
   // open cracks (the profile then measures the ligament).
   std::optional<double> area_mean_thickness_m;
+  // Why t_A was left out, where it was (its own note: profile_note marks a state whose entry chip was not left out,
+  // and such a state is not a steady one).
+  std::string area_mean_thickness_note;
   std::optional<double> chip_thickness_ratio_from_area;
   std::optional<double> shear_angle_from_ratio_deg;  // tan phi = r cos a / (1 - r sin a)
   std::optional<double> chip_velocity_m_per_s;       // V r (continuity)

@@ -73,8 +73,9 @@ void add_calibrate_command(CLI::App& app) {
                    "evaluations.csv, best_material.toml, calibration.md, plots (docs/calibration.md)");
   cmd->add_option("config", o->config_file, "Calibration file (TOML), e.g. cases/calibration/ti64_klippel_forces.toml")
       ->required();
-  cmd->add_option("-o,--out", o->out_dir, "Result directory (default: results/calibration_<config name>)->check(non_empty_path()); an "
-                                          "existing one with the same configuration is resumed");
+  cmd->add_option("-o,--out", o->out_dir, "Result directory (default: results/calibration_<config name>); an "
+                                          "existing one with the same configuration is resumed")
+      ->check(non_empty_path());
   cmd->add_option("-j,--jobs", o->jobs, "Runs at the same time (default: cores / threads of each run)")
       ->check(CLI::Range(1, 1024));
   cmd->add_flag("-f,--force", o->force, "Delete the result directory first (no resume)");

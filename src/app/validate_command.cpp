@@ -273,7 +273,8 @@ void add_validate_command(CLI::App& app) {
                 "Directory of run records (scene.toml, forces.csv, summary.json of each complete condition; small, "
                 "meant to be committed): conditions complete there with the same scene are reported without running, "
                 "and every complete condition is added to it, so that a matrix run over several sessions or machines "
-                "keeps its parts when the result directories are gone");
+                "keeps its parts when the result directories are gone")
+      ->check(non_empty_path());
   v->add_option("-j,--jobs", o->jobs, "Runs at the same time (default: cores / threads)")->check(CLI::Range(1, 1024));
   v->add_option("-t,--threads", o->threads, "OpenMP threads of each run (default: 1)")->check(CLI::Range(1, kMaxThreads));
   v->add_flag("--no-plots", o->no_plots, "Only the tables");

@@ -30,17 +30,6 @@ std::vector<std::string> set_names(std::vector<TableReader>& tables) {
   return names;
 }
 
-std::string with_changed_keys(const std::string& citation, const std::string& set, TableReader& t) {
-  std::vector<std::string> changed;
-  for (const std::string& key : t.present_keys())
-    if (key != "name" && key != "library" && key != "citation") changed.push_back(key);
-  if (changed.empty()) return citation;
-  std::string keys;
-  for (const std::string& k : changed) keys += (keys.empty() ? "" : ", ") + k;
-  // The base set's citation stays: its other numbers still come from there.
-  return fmt::format("{}{}with {} changed from library set \"{}\"", citation, citation.empty() ? "" : "; ", keys, set);
-}
-
 MaterialParameters read_material(TableReader& t, const MaterialLibrary& library,
                                  const std::vector<std::string>& later_names) {
   MaterialParameters m;
@@ -60,9 +49,10 @@ MaterialParameters read_material(TableReader& t, const MaterialLibrary& library,
   }
   m.name = t.string("name", "");
   t.check("name", !m.name.empty(), "a non-empty string", 0.0);
-  m.citation = t.has("citation") ? t.string("citation", "")
-               : from_library    ? with_changed_keys(m.citation, base_name, t)
-                                 : std::string();
+  // A set changed from a library set keeps its citation: naming the changed keys there would change the scene.toml
+  // of every calibration trial and validate --material-key set, and their complete runs would no longer be
+  // recognised (run/run_case.cpp, existing_run).
+  m.citation = t.string("citation", m.citation);
   read_material_keys(t, m, !from_library);
   // After all keys are read, so that inherited (library) values are checked too.
   check_material_keys(t, m);

@@ -35,8 +35,7 @@ const MaterialLibrary& builtin_material_library();
 // Reads and validates one [[material]] table (case file or library file). With `library = "<set>"`
 // it starts from that set of `library` and every other key overrides; otherwise it is a full
 // definition. The keys and their rules are the physics models' parameter tables (io/material_keys.hpp);
-// fracture_toughness K_IC is converted to fracture_energy G_f = K_IC^2 (1 - nu^2) / E. A set that changes
-// keys of its library set without a citation of its own keeps the library set's, with the changed keys named.
+// fracture_toughness K_IC is converted to fracture_energy G_f = K_IC^2 (1 - nu^2) / E.
 // `later_names`: the sets defined further down the same file, which `library` cannot reach yet (the error says so).
 MaterialParameters read_material(TableReader& table, const MaterialLibrary& library,
                                  const std::vector<std::string>& later_names = {});

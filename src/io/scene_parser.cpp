@@ -21,6 +21,10 @@ namespace {
 
 std::string vec_text(const Vec2& v) { return fmt::format("[{}, {}]", v.x(), v.y()); }
 
+// The start-overlap and empty-body checks scan particle positions before the memory check: at most this many per
+// check (a fraction of a second), so that a scene too large to run is still refused at once.
+constexpr double kMaxSeedPointsScanned = 4e6;
+
 // Physical ranges shared by several keys (docs/reliability.md, "Input ranges"). Wide enough for
 // any 2D cutting or impact scene, narrow enough that sizes, step counts and output counts computed
 // from them stay representable (the memory and step estimate then decides what fits this machine).
@@ -301,14 +305,10 @@ ThermalSpec read_thermal(std::optional<TableReader> t) {
   th.conduction = t->boolean("conduction", th.conduction);
   for (auto [side, value] : {std::pair{"left", &th.left}, {"right", &th.right}, {"bottom", &th.bottom}, {"top", &th.top}}) {
     *value = t->optional_number(side);
-    if (*value) {
+    // Kept, not refused, without conduction: an expanded cutting scene run with --set thermal.conduction=false
+    // (docs/results/conduction_off) keeps its far-field side for when conduction is on again.
+    if (*value)
       t->check(side, **value, Range::open_closed(0.0, kMaxTemperature, "K", "absent for an insulated side"));
-      // Without conduction no heat crosses the side: the value would be ignored without a word.
-      if (!th.conduction)
-        t->fail(side, fmt::format("= {:g} K holds the side's temperature through the conduction update, which is off: "
-                                  "give thermal.conduction = true, or leave the side out",
-                                  **value));
-    }
   }
   t->reject_unknown_keys();
   return th;
@@ -387,12 +387,15 @@ BodySpec read_body(TableReader t, const Scene& scene) {
   b.temperature = t.number("temperature", scene.materials[m].room_temperature, temperature_range(scene.materials[m]));
   t.reject_unknown_keys();
   // A shape thinner than the particle spacing holds none of the sub-grid's points: the body would vanish silently.
+  // (Beyond kMaxSeedPointsScanned in its box the search is left out: such a shape is no sliver, and the memory
+  // check decides whether it runs at all.)
   const Vec2 everywhere = Vec2::Constant(std::numeric_limits<double>::infinity());
-  bool seeded = false;
-  for_each_seed_point(b, scene.grid.min, scene.grid.cell_size, -everywhere, everywhere, [&](const Vec2&) {
-    seeded = true;
-    return false;
-  });
+  bool seeded = seed_points_in_box(b, scene.grid.cell_size, -everywhere, everywhere) > kMaxSeedPointsScanned;
+  if (!seeded)
+    for_each_seed_point(b, scene.grid.min, scene.grid.cell_size, -everywhere, everywhere, [&](const Vec2&) {
+      seeded = true;
+      return false;
+    });
   if (!seeded)
     t.fail(shape_key(t), fmt::format("body \"{}\" gets no particle: its shape holds none of the points of the particle "
                                      "sub-grid (spacing grid.cell_size / particles_per_cell = {:g} m); make the shape "
@@ -401,29 +404,46 @@ BodySpec read_body(TableReader t, const Scene& scene) {
   return b;
 }
 
-// A seed point of `body` inside `inside`'s region (within the box [lo, hi]), if any.
+// A seed point of `body` inside `inside`'s region (within the box [lo, hi]), if any. The scan runs before the
+// memory check and must not turn a huge scene's instant refusal into minutes of scanning: beyond
+// kMaxSeedPointsScanned points it steps over the sub-grid (an overlap narrower than the stride then passes).
 template <class Inside>
 std::optional<Vec2> first_point_inside(const BodySpec& body, const GridSpec& grid, const Vec2& lo, const Vec2& hi,
                                        Inside inside) {
+  const double points = seed_points_in_box(body, grid.cell_size, lo, hi);
+  const long stride = points > kMaxSeedPointsScanned
+                          ? static_cast<long>(std::ceil(std::sqrt(points / kMaxSeedPointsScanned)))
+                          : 1;
   std::optional<Vec2> found;
-  for_each_seed_point(body, grid.min, grid.cell_size, lo, hi, [&](const Vec2& x) {
-    if (inside(x)) found = x;
-    return !found;
-  });
+  for_each_seed_point(
+      body, grid.min, grid.cell_size, lo, hi,
+      [&](const Vec2& x) {
+        if (inside(x)) found = x;
+        return !found;
+      },
+      stride);
   return found;
 }
 
-// Two bodies may touch, not share area: the particles of both would sit there, twice the mass.
+// Two bodies may touch, not share area: the particles of both would sit there, twice the mass. Both ways round:
+// with different particles_per_cell the coarser body may have no point inside the finer one.
 void check_body_overlaps(TableReader& t, const Scene& scene) {
   const BodySpec& body = scene.bodies.back();
+  const auto point_of_in = [&](const BodySpec& a, const BodySpec& b) {
+    Vec2 lo, hi;
+    b.shape.bounds(lo, hi);
+    return first_point_inside(a, scene.grid, lo, hi, [&](const Vec2& p) { return b.shape.contains(p); });
+  };
   for (std::size_t i = 0; i + 1 < scene.bodies.size(); ++i) {
     const BodySpec& other = scene.bodies[i];
-    Vec2 lo, hi;
-    other.shape.bounds(lo, hi);
-    if (const auto x = first_point_inside(body, scene.grid, lo, hi, [&](const Vec2& p) { return other.shape.contains(p); }))
+    if (const auto x = point_of_in(body, other))
       t.fail(shape_key(t), fmt::format("body \"{}\" overlaps body \"{}\" (its particle at {} lies inside \"{}\"): "
                                        "bodies may touch but not share area, where both would put their mass",
                                        body.name, other.name, vec_text(*x), other.name));
+    if (const auto x = point_of_in(other, body))
+      t.fail(shape_key(t), fmt::format("body \"{}\" overlaps body \"{}\" (a particle of \"{}\" at {} lies inside it): "
+                                       "bodies may touch but not share area, where both would put their mass",
+                                       body.name, other.name, other.name, vec_text(*x)));
   }
 }
 

@@ -261,12 +261,6 @@ std::vector<TableReader> TableReader::array_of_tables(std::string_view key) {
   return result;
 }
 
-std::vector<std::string> TableReader::present_keys() const {
-  std::vector<std::string> keys;
-  for (const auto& [key, value] : *table_) keys.emplace_back(key.str());
-  return keys;
-}
-
 void TableReader::reject_unknown_keys() const {
   for (const auto& [key, value] : *table_) {
     const std::string_view name = key.str();

@@ -87,8 +87,6 @@ class TableReader {
 
   // Throws for the first key present in the table that no getter asked about.
   void reject_unknown_keys() const;
-  // The keys present in the table (toml++ keeps them sorted by name).
-  std::vector<std::string> present_keys() const;
 
  private:
   const toml::node* find(std::string_view key) const;

@@ -144,7 +144,9 @@ class PyRun {
     run_->flush_outputs();
     return read_csv_columns(run_->root() / name);
   }
+  // Not while another thread steps: the summary walks the particle arrays, which a step reorders and frees.
   py::object summary() const {
+    refuse_while_stepping("summary");
     if (exit_code_) return json_to_python(to_json(read_summary(run_->root() / "summary.json")));
     return json_to_python(to_json(run_->summary()));
   }

@@ -21,4 +21,13 @@ void seed_particles(const Scene& scene, const Grid& grid, Particles& particles) 
   }
 }
 
+double seed_points_in_box(const BodySpec& body, double cell_size, const Vec2& lo, const Vec2& hi) {
+  const double d = cell_size / body.particles_per_cell;
+  Vec2 body_lo, body_hi;
+  body.shape.bounds(body_lo, body_hi);
+  const Vec2 extent = body_hi.cwiseMin(hi) - body_lo.cwiseMax(lo);
+  if ((extent.array() < 0.0).any()) return 0.0;
+  return (extent.x() / d + 1.0) * (extent.y() / d + 1.0);
+}
+
 }  // namespace mpmcut

@@ -10,6 +10,7 @@
 #include <iostream>
 #include <map>
 #include <set>
+#include <regex>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -624,6 +625,13 @@ std::string measurements_text(const CalibrationConfig& c) {
   return s;
 }
 
+// The rows without their line numbers: a comment or blank line added to the measurement file moves them, and that
+// changes no measured value (a resume was refused for it).
+std::string without_line_numbers(const std::string& rows) {
+  static const std::regex line_number(R"((^|\n)(\w+) line \d+: )");
+  return std::regex_replace(rows, line_number, "$1$2: ");
+}
+
 // Empty when the file cannot be read: every caller compares it with the text it expects.
 std::string read_text(const fs::path& file) { return read_whole_file(file).value_or(""); }
 
@@ -649,9 +657,9 @@ int run_calibration(const CalibrationConfig& config, const fs::path& out, int jo
   const fs::path rows = out / "measurements_used.txt";
   const std::string rows_text = measurements_text(config);
   if (fs::exists(rows)) {
-    const std::string old_rows = read_text(rows);
-    if (old_rows != rows_text) {
-      std::istringstream was(old_rows), is(rows_text);
+    const std::string old_rows = without_line_numbers(read_text(rows));
+    if (old_rows != without_line_numbers(rows_text)) {
+      std::istringstream was(old_rows), is(without_line_numbers(rows_text));
       std::string a, b;
       for (;;) {
         const bool more_a = static_cast<bool>(std::getline(was, a)), more_b = static_cast<bool>(std::getline(is, b));

@@ -233,7 +233,8 @@ TEST_F(LongRuns, TheHistoryEndsWithARowAtTheEndTime) {
 TEST_F(LongRuns, AnEmptyDirectoryOptionIsRefused) {
   for (const std::vector<std::string>& args :
        {std::vector<std::string>{"run", case_file_.string(), "--out", ""}, {"resume", ""}, {"analyze", ""},
-        {"plot", ""}, {"sweep", case_file_.string(), "--speeds", "1", "--out", ""}, {"convergence", ""}}) {
+        {"plot", ""}, {"sweep", case_file_.string(), "--speeds", "1", "--out", ""}, {"convergence", ""},
+        {"calibrate", case_file_.string(), "--out", ""}, {"validate", "--records", ""}}) {
     const CliResult r = run_mpmcut(args, dir_ / "empty.log");
     EXPECT_EQ(r.exit_code, 2) << args[0] << ": " << r.output;
     EXPECT_NE(r.output.find("an empty path"), std::string::npos) << args[0] << ": " << r.output;

@@ -37,6 +37,17 @@ TEST(ChipOverTime, SamplesAreDueOnAFixedGridOfTravelFromTheSteadyWindow) {
   EXPECT_TRUE(sampling.due(400e-6, taken));
 }
 
+// A state whose t_A was left out (a tightly curled chip) is still a steady state: its note went into the profile's
+// note, which marks an entry chip not left out, and every such state dropped out of the statistics.
+TEST(ChipOverTime, AStateWithoutItsAreaThicknessIsStillSteady) {
+  ChipAnalysis a;
+  a.steady_samples = 40;
+  a.area_mean_thickness_note = "the thickness by area exceeds the thickest cross-section: t_A is left out";
+  EXPECT_TRUE(chip_sample(a).steady);
+  a.profile_note = "the chip holds little more than the chip of the tool's entry";
+  EXPECT_FALSE(chip_sample(a).steady);
+}
+
 TEST(ChipOverTime, StatisticsOverTheSteadySamplesThatHaveEachQuantity) {
   // The first state still measured part of the entry chip: listed, not averaged.
   const std::vector<ChipSample> samples{sample(250e-6, "continuous", 0.9, 150e-6, 160e-6, false),
