@@ -24,7 +24,11 @@ struct PenaltyContactForce {
 // distance of its centre; <= 0: no contact). rel: the particle's velocity relative to the body's, m/s.
 // normal: the body's unit outward normal at the particle. mass: the particle's inertial mass, kg/m.
 // previous_friction: the friction force of its last step (zero when it was out of contact).
-// Both directions are springs of stiffness k = stiffness mass / dt^2: the normal force is k times the
+// spring_dt: the step that sets the springs (0: dt). The solver passes its stable step, so that k does not jump on
+// the steps shortened to land on an output time (up to 4x on every history row with k from dt; the overlap built
+// at the old k then pushed back harder, force noise and energy the ledger did not book); dt <= spring_dt keeps
+// k dt^2 <= stiffness mass, the stable range.
+// Both directions are springs of stiffness k = stiffness mass / spring_dt^2: the normal force is k times the
 // overlap; the friction force is the previous one (in the current tangent) plus k times this step's
 // slip v_t dt against it (elastic stick), returned onto mu f_n where it would exceed it (slide: the
 // slip beyond the spring's is real sliding and dissipates mu f_n per unit length). The stick spring
@@ -33,10 +37,11 @@ struct PenaltyContactForce {
 // creep along the face at 2 C tau / (rho c), about 15 m/s for Ti-6Al-4V at tau = 500 MPa.
 inline PenaltyContactForce penalty_contact_force(double overlap, const Vec2& rel, const Vec2& normal, double mass,
                                                  double dt, double stiffness, double mu,
-                                                 const Vec2& previous_friction = Vec2::Zero()) {
+                                                 const Vec2& previous_friction = Vec2::Zero(), double spring_dt = 0.0) {
   PenaltyContactForce c;
   if (overlap <= 0.0) return c;
-  const double k = stiffness * mass / (dt * dt);
+  const double t_k = spring_dt > 0.0 ? spring_dt : dt;
+  const double k = stiffness * mass / (t_k * t_k);
   c.normal_force = k * overlap;
   const Vec2 vt = rel - rel.dot(normal) * normal;
   const Vec2 trial = previous_friction - previous_friction.dot(normal) * normal - (k * dt) * vt;

@@ -132,8 +132,8 @@ void RigidContact::compute_node_gaps(const Particles& P, const Grid& G, std::spa
 // first body in the scene's order it touches; touching another body in the same step, it starts
 // afresh there.
 void RigidContact::apply_penalty(Particles& P, Grid& G, std::span<const ShapeFunction> body_shapes,
-                                 double inertia_factor, double dt, std::vector<RigidBodyState>& bodies,
-                                 EnergyTotals& energy) {
+                                 double inertia_factor, double dt, double stable_dt,
+                                 std::vector<RigidBodyState>& bodies, EnergyTotals& energy) {
   touched_.assign(P.size(), 0);
   for (std::size_t r = 0; r < geometry_.size(); ++r) {
     const Vec2 shift = bodies[r].displacement;
@@ -151,7 +151,7 @@ void RigidContact::apply_penalty(Particles& P, Grid& G, std::span<const ShapeFun
       const double m = inertia_factor * P.mass[p];
       const PenaltyContactForce c =
           penalty_contact_force(overlap, P.velocity[p] - vr, normal, m, dt, settings_.penalty_stiffness, mu,
-                                first ? P.contact_friction_force[p] : Vec2::Zero());
+                                first ? P.contact_friction_force[p] : Vec2::Zero(), stable_dt);
       if (first) P.contact_friction_force[p] = c.friction_force;
       const Vec2 dp = dt * c.force;  // momentum given to the particle's nodes this step
       const double q = c.slip_work;

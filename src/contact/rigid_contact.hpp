@@ -79,8 +79,10 @@ class RigidContact {
   // particle whose domain reaches into a rigid body, spread onto the grid's force by the particle's
   // weights; the reaction on the body, its work, the frictional work (on grid.friction_heat) and one
   // record per particle in contact; each particle's contact_friction_force carries its stick history.
+  // stable_dt: the step's stable (CFL) step, which sets the springs' stiffness (penalty_law.hpp), dt <= stable_dt.
   void apply_penalty(Particles& particles, Grid& grid, std::span<const ShapeFunction> body_shapes,
-                     double inertia_factor, double dt, std::vector<RigidBodyState>& bodies, EnergyTotals& energy);
+                     double inertia_factor, double dt, double stable_dt, std::vector<RigidBodyState>& bodies,
+                     EnergyTotals& energy);
 
   // One pass of the nodal law on the pass's grid velocity. The passes after P2G and after the
   // momentum update (whose corrections reach the particles) record the impulse on each body, its

@@ -111,7 +111,8 @@ void Simulation::step(double max_dt) {
 
 double Simulation::begin_step(double max_dt) {
   parallel_ = particles_.size() >= parallel_min_particles_;
-  const double dt = time_step_to_target(max_dt, stable_time_step());
+  stable_dt_ = stable_time_step();
+  const double dt = time_step_to_target(max_dt, stable_dt_);
   if (state_.step % 20 == 0) sort_particles_by_cell(particles_, grid_);
   conduct_now_ = conduction_.begin_step(state_.conduction, dt);
   return dt;
@@ -130,7 +131,8 @@ void Simulation::particles_to_grid() {
 void Simulation::prepare_rigid_contact(double dt) {
   contact_.begin_step(state_.rigid_bodies);
   if (!contact_.empty() && scene_.solver.contact_detection == ContactDetection::Penalty)
-    contact_.apply_penalty(particles_, grid_, shapes_, inertia_factor_, dt, state_.rigid_bodies, state_.energy);
+    contact_.apply_penalty(particles_, grid_, shapes_, inertia_factor_, dt, std::max(dt, stable_dt_),
+                           state_.rigid_bodies, state_.energy);
   if (!contact_.empty() && scene_.solver.contact_detection == ContactDetection::Particle)
     contact_.compute_particle_weights(particles_, grid_, shapes_, inertia_factor_, state_.rigid_bodies);
   if (!contact_.empty() && scene_.solver.contact_detection == ContactDetection::Gap)

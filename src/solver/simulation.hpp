@@ -100,6 +100,7 @@ class Simulation {
   // on a busy machine waiting threads are worse. Results do not depend on it (fixed orders).
   std::size_t parallel_min_particles_ = 4096;
   bool parallel_ = true;
+  double stable_dt_ = 0.0;    // this step's stable step, before landing on an output time (penalty springs)
   bool conduct_now_ = false;  // this step ends with a conduction update (P2G maps temperatures)
   Particles particles_;
   RestartState state_;

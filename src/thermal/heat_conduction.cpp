@@ -62,7 +62,12 @@ void conduct_heat(Particles& P, Grid& G, std::span<const ShapeFunction> body_sha
   colouring.for_each(parallel, [&](std::size_t p) {
     const Stencil st = particle_stencil(G, body_shapes, P, p);
     Vec2 grad_T = Vec2::Zero();
-    for_each_stencil_node(G, st, [&](int node, double, const Vec2& grad) { grad_T += field_at(node) * grad; });
+    // A node that no particle weighs (heat capacity 0) has no temperature (0 in the array): with linear shape
+    // functions a particle exactly on a grid line still has a gradient there, and 0 K read as a flux of k T / h.
+    // Such a node takes the particle's own value, which adds nothing (the gradients sum to zero).
+    for_each_stencil_node(G, st, [&](int node, double, const Vec2& grad) {
+      grad_T += (G.heat_capacity[node] > 0.0 ? field_at(node) : P.temperature[p]) * grad;
+    });
     const double k = materials[P.material[p]].thermal_conductivity;
     const Vec2 flux = -k * grad_T;  // W/m^2
     // Conduct through the particle's solid only. Plastic flow keeps the volume, so V > V0 is crack

@@ -188,6 +188,22 @@ TEST(PenaltyLaw, NormalSpringAndElasticStickWithCoulombLimit) {
   }
 }
 
+// A step shortened to land on an output time (0.5-1 of the stable one) must not stiffen the springs: with k from
+// the step itself, the normal force of the same overlap jumped by 1 / r^2 (4x at r = 0.5) on every history row.
+TEST(PenaltyLaw, TheSpringsDoNotStiffenOnAShortenedStep) {
+  const Vec2 normal(0.0, 1.0);
+  const double m = 2e-6, stable = 1e-8, s = 0.5, overlap = 1e-9;
+  const PenaltyContactForce full = penalty_contact_force(overlap, Vec2(-1e-3, 0.0), normal, m, stable, s, 0.3);
+  const PenaltyContactForce shortened =
+      penalty_contact_force(overlap, Vec2(-1e-3, 0.0), normal, m, 0.5 * stable, s, 0.3, Vec2::Zero(), stable);
+  EXPECT_EQ(shortened.normal_force, full.normal_force);
+  // The stick spring builds the friction force by k v_t dt: half of the full step's in half the time.
+  EXPECT_NEAR(shortened.friction_force.x(), 0.5 * full.friction_force.x(), 1e-12 * std::abs(full.friction_force.x()));
+  // Without spring_dt the step sets k, as before (the unit tests above).
+  EXPECT_NEAR(penalty_contact_force(overlap, Vec2::Zero(), normal, m, 0.5 * stable, s, 0.3).normal_force,
+              4.0 * full.normal_force, 1e-12 * full.normal_force);
+}
+
 // apply_penalty on a hand-made particle above the plate of PlateFixture: its force reaches the grid as
 // S_ip f (summing to f), the plate gets the reaction, the body's work and the frictional work are booked.
 TEST(PenaltyContact, ParticleForceGoesToItsNodesAndTheReactionToThePlate) {
@@ -209,7 +225,7 @@ TEST(PenaltyContact, ParticleForceGoesToItsNodesAndTheReactionToThePlate) {
   f.grid.reset();
   f.contact.begin_step(f.bodies);
   const std::vector<ShapeFunction> shapes{shape};
-  f.contact.apply_penalty(P, f.grid, shapes, 1.0, dt, f.bodies, f.energy);
+  f.contact.apply_penalty(P, f.grid, shapes, 1.0, dt, dt, f.bodies, f.energy);
   const PenaltyContactForce c =
       penalty_contact_force(0.25 * h - (5.2499 * h - 5 * h), Vec2(3.0, -0.5), Vec2(0, 1), m, dt, 0.5, 0.3);
   ASSERT_TRUE(c.sliding);

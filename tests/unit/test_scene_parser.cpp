@@ -337,7 +337,8 @@ TEST(SceneValidation, ChoicesListTheAllowedValues) {
 }
 
 TEST(SceneValidation, RangesOfSolverAndThermal) {
-  expect_error(edit("end_time = 1.0", "end_time = 1.0\ncfl = 1.5"), "cfl", {"key 'solver.cfl'", "(0, 1]"});
+  expect_error(edit("end_time = 1.0", "end_time = 1.0\ncfl = 1.5"), "cfl", {"key 'solver.cfl'", "(0, 0.8]"});
+  expect_error(edit("end_time = 1.0", "end_time = 1.0\ncfl = 0.9"), "cfl", {"key 'solver.cfl'", "(0, 0.8]"});
   expect_error(edit("end_time = 1.0", "end_time = 1.0\nflip_fraction = -0.1"), "flip", {"key 'solver.flip_fraction'"});
   expect_error(edit("end_time = 1.0", "end_time = -1.0"), "end_time", {"key 'solver.end_time'", "must be in (0, 1000] s"});
   expect_error(kBase + "[[rigid_body]]\nname = \"tool\"\npolygon = [[0, 0], [1, 0], [0, 1]]\nfriction = -0.1\n",
@@ -496,7 +497,7 @@ TEST(SceneOverrides, UnknownKeysAndBadValuesNameTheOverride) {
   m = error_of(kBase, {"thermall.left=300"});
   EXPECT_TRUE(m.starts_with("case.toml: --set 'thermall.left=300': key 'thermall': unknown key")) << m;
   m = error_of(kBase, {"solver.cfl=2"});
-  EXPECT_TRUE(m.starts_with("case.toml: --set 'solver.cfl=2': key 'solver.cfl': must be in (0, 1], got 2")) << m;
+  EXPECT_TRUE(m.starts_with("case.toml: --set 'solver.cfl=2': key 'solver.cfl': must be in (0, 0.8] (Courant number), got 2")) << m;
   m = error_of(kBase, {"solver.scheme=usf"});
   EXPECT_NE(m.find("--set 'solver.scheme=usf'"), std::string::npos) << m;
   m = error_of(kBase, {"body[3].velocity=[0, 0]"});
