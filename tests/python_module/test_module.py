@@ -287,3 +287,11 @@ print("status:", run.status, run.exit_code)
                           timeout=300)
     assert "raised: Run: the results in" in done.stdout and "could not be written" in done.stdout, done
     assert "status: failed 4" in done.stdout, done
+
+
+def test_objects_without_their_cpp_part_cannot_be_made():
+    """Case.__new__(Case) and Run.__new__(Run) gave objects that crashed the interpreter when used."""
+    with pytest.raises(TypeError, match="load_case"):
+        mpmcut.Case.__new__(mpmcut.Case)
+    with pytest.raises(TypeError, match="Run.resume"):
+        mpmcut.Run.__new__(mpmcut.Run)

@@ -16,6 +16,26 @@ __all__ = ["Case", "InputError", "Run", "load_case", "case_from_toml", "default_
            "particle_fields", "particle_field_units", "grid_convergence", "__version__"]
 
 
+# Case.__new__(Case) and Run.__new__(Run) gave objects whose C++ part was never made, and using them crashed the
+# interpreter (pybind11 does not check). Cases come from the functions below (made in C++, which does not call
+# __new__); a Run from Run(case, out, ...), which calls __new__ with its arguments and then __init__.
+def _case_new(cls, *args, **kwargs):
+    raise TypeError("mpmcut.Case is made by mpmcut.load_case(), case_from_toml() or default_case()")
+
+
+_run_new_of_pybind11 = Run.__new__
+
+
+def _run_new(cls, *args, **kwargs):
+    if not args and not kwargs:
+        raise TypeError("mpmcut.Run is made by Run(case, out, ...), run_case() or Run.resume(out)")
+    return _run_new_of_pybind11(cls, *args, **kwargs)
+
+
+Case.__new__ = _case_new
+Run.__new__ = _run_new
+
+
 def _toml_value(value):
     """A Python value as the TOML text a --set override takes."""
     if isinstance(value, bool):
