@@ -50,6 +50,10 @@ CuttingParameters read_cutting_parameters(TableReader& t) {
   // Not below grid.cell_size's 1 nm: the expanded scene must read back (1e-300 was taken, and its scene refused).
   t.check("cell_size", c.cell_size == 0.0 || (c.cell_size >= 1e-9 && c.cell_size <= 0.5 * c.uncut_chip_thickness),
           "0 (= t0/10) or a length in [1e-9, uncut_chip_thickness/2] m", c.cell_size);
+  if (c.cell_size == 0.0 && c.uncut_chip_thickness / 10.0 < 1e-9)
+    t.fail("cell_size", fmt::format("is 0, i.e. t0/10 = {:g} m, below the grid's 1 nm: give a cell_size of at least "
+                                    "1e-9 m",
+                                    c.uncut_chip_thickness / 10.0));
   c.particles_per_cell =
       static_cast<int>(t.integer("particles_per_cell", c.particles_per_cell, Range::closed(1, 4, "per direction")));
   c.conduction = t.boolean("conduction", c.conduction);

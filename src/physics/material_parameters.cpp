@@ -9,7 +9,11 @@
 namespace mpmcut {
 
 double MaterialParameters::p_wave_speed() const {
-  return std::sqrt((bulk_modulus() + 4.0 * shear_modulus() / 3.0) / density);
+  // The bulk modulus the equation of state has at the reference density (Mie-Grueneisen: rho0 c0^2), as the
+  // material's own wave speed at the start: a fixed step checked against E and nu alone was refused below the
+  // run's own limit.
+  const double K = eos == EquationOfState::MieGruneisen ? density * mg_c0 * mg_c0 : bulk_modulus();
+  return std::sqrt((K + 4.0 * shear_modulus() / 3.0) / density);
 }
 
 const ParameterTable<MaterialParameters>& material_model_table() {

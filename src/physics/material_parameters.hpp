@@ -29,7 +29,7 @@ struct MaterialParameters : ElasticParameters,
   std::string citation;  // where the numbers come from
   MaterialModel model = MaterialModel::Elastic;
 
-  // Elastic P-wave speed sqrt((K + 4G/3)/rho), m/s
+  // Elastic P-wave speed sqrt((K + 4G/3)/rho) at the reference density, K the equation of state's there, m/s
   double p_wave_speed() const;
   // Thermal diffusivity k / (rho c), m^2/s (0 for a material without heat capacity)
   double thermal_diffusivity() const {

@@ -3,6 +3,7 @@
 // point, and a run that cannot fit in memory or cannot finish is refused before allocation.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -10,6 +11,7 @@
 #include "io/run_estimate.hpp"
 #include "../support/parse_errors.hpp"
 #include "io/input_error.hpp"
+#include "io/material_library.hpp"
 #include "run/case_loading.hpp"
 #include "run/run_case.hpp"
 #include "solver/simulation.hpp"
@@ -83,6 +85,10 @@ TEST(InputBounds, IssueReportsAreInputErrorsNamingKeyRangeAndValue) {
   m = cutting_error({"cutting.cell_size=1e-300"});
   EXPECT_NE(m.find("key 'cutting.cell_size': must be 0 (= t0/10) or a length in [1e-9, uncut_chip_thickness/2] m"),
             std::string::npos) << m;
+  // The default cell t0/10 below 1 nm too (a 5 nm cut ran, and its scene.toml did not read back).
+  m = cutting_error({"cutting.uncut_chip_thickness=5e-9", "cutting.cell_size=0", "cutting.edge_radius=0"});
+  EXPECT_NE(m.find("key 'cutting.cell_size': is 0, i.e. t0/10 = 5e-10 m, below the grid's 1 nm"), std::string::npos)
+      << m;
   m = cutting_error({"cutting.friction=2.1"});
   EXPECT_TRUE(m.ends_with("got 2.1")) << m;
   m = error_of(kDisk, {"solver.end_time=1e308"});
@@ -160,6 +166,13 @@ TEST(InputBounds, AFixedTimeStepBeyondStabilityIsRefusedWithTheLimit) {
         << message;
     EXPECT_NE(message.find("at most"), std::string::npos) << message;
   }
+  // With a Mie-Grueneisen EOS the wave speed is that of its bulk sound speed c0 (the check used E and nu alone and
+  // refused steps the run itself takes).
+  MaterialParameters mg = *builtin_material_library().find("ti64-johnson-1985");
+  mg.eos = EquationOfState::MieGruneisen;
+  mg.mg_c0 = 4000.0;
+  EXPECT_NEAR(mg.p_wave_speed(), std::sqrt((mg.density * 4000.0 * 4000.0 + 4.0 * mg.shear_modulus() / 3.0) / mg.density),
+              1e-9);
   // elastic-unit (E = 1000 Pa, rho = 1000 kg/m^3): c ~ 1 m/s, so 0.01 s is well inside the limit of ~0.08 s.
   EXPECT_NO_THROW(Simulation(parse_case(kDisk, "case.toml", {"solver.fixed_time_step=0.01"}).scene));
 }
