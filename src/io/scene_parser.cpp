@@ -476,12 +476,27 @@ void check_rigid_overlaps(TableReader& t, const Scene& scene) {
 }
 
 // Frictional heat goes into the particles at the contact, whose temperature rises by heat / (m c).
+// Only bodies the rigid body can reach count: the boxes they sweep over the run (at their initial velocities, the
+// bodies also under the body force), two cells wide, must meet (a pad the punch never reaches was refused).
 void check_friction_heat(TableReader& t, const Scene& scene) {
   const RigidBodySpec& rigid = scene.rigid_bodies.back();
   if (rigid.friction <= 0.0 || rigid.friction_heat_share <= 0.0) return;
+  const double T = scene.solver.end_time, margin = 2.0 * scene.grid.cell_size;
+  Vec2 r_lo = rigid.polygon.vertices.front(), r_hi = r_lo;
+  for (const Vec2& v : rigid.polygon.vertices) r_lo = r_lo.cwiseMin(v), r_hi = r_hi.cwiseMax(v);
+  const Vec2 r_move = T * rigid.velocity, r_grow = Vec2::Constant(rigid.rounding_radius + margin);
+  r_lo = r_lo.cwiseMin(r_lo + r_move) - r_grow;
+  r_hi = r_hi.cwiseMax(r_hi + r_move) + r_grow;
   for (const BodySpec& body : scene.bodies) {
     const MaterialParameters& m = scene.materials[scene.material_index(body.material)];
-    if (m.specific_heat <= 0.0)
+    Vec2 lo, hi;
+    body.shape.bounds(lo, hi);
+    const Vec2 move = T * body.velocity;
+    const Vec2 grow = Vec2::Constant(0.5 * scene.body_force.norm() * T * T + margin);
+    lo = lo.cwiseMin(lo + move) - grow;
+    hi = hi.cwiseMax(hi + move) + grow;
+    const bool reachable = (lo.array() <= r_hi.array()).all() && (r_lo.array() <= hi.array()).all();
+    if (reachable && m.specific_heat <= 0.0)
       t.fail("friction", fmt::format("= {:g} heats the bodies it rubs (friction_heat_share = {:g}), but material \"{}\" "
                                      "of body \"{}\" has no specific_heat (0 J/(kg K)): its temperature would become "
                                      "infinite; give the material a specific_heat, or friction_heat_share = 0",

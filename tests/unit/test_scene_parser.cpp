@@ -262,6 +262,14 @@ TEST(SceneValidation, FrictionalHeatNeedsASpecificHeat) {
                           wall + "friction_heat_share = 0.0\n")),
             "");
   EXPECT_EQ(error_of(wall), "");  // elastic-unit's specific heat is 1 J/(kg K)
+  // A rigid body that cannot reach the body in the run (boxes swept at the initial velocities, two cells wide) does
+  // not need its heat capacity; moving towards it, it does.
+  const std::string far = kBase + "[[rigid_body]]\nname = \"wall\"\npolygon = [[0.85, 0.0], [0.95, 0.0], [0.95, 1.0], "
+                                  "[0.85, 1.0]]\nfriction = 0.3\n";
+  const std::string no_heat_capacity = "library = \"elastic-unit\"\nspecific_heat = 0.0";
+  EXPECT_EQ(error_of(edit("library = \"elastic-unit\"", no_heat_capacity, far)), "");
+  expect_error(edit("library = \"elastic-unit\"", no_heat_capacity, far + "velocity = [-0.5, 0.0]\n"), "friction = 0.3",
+               {"has no specific_heat"});
 }
 
 TEST(SceneValidation, ParticlesPerCellOutOfRange) {
