@@ -1,0 +1,121 @@
+// Hillerborg objectivity where the grid, not the geometry, chooses the band's width, and the band's orientation
+// to the grid (docs/theory_materials.md §10, "A band the grid chooses").
+//
+// Set-up: a layer four cells thick of elastic-perfectly plastic Johnson-Cook material between two heavy, stiff
+// elastic blocks (density and modulus x 1e4, free: no grid side to hold them, so the sandwich can be rotated), the
+// upper one sliding at v0 along the layer; the layer starts with the matching linear velocity profile (simple
+// shear). A seed strip one particle spacing thick along the layer's middle has the lower failure strain (0.02
+// against 0.1): it initiates first, and the strain localises from it into a band whose width the grid decides.
+// The measure is the damage dissipation of the particles over the middle 60 % of the layer's length per unit
+// length (the ends are free surfaces), over G_f.
+//
+// Aligned with the grid the band is one cell wide and dissipates G_f per crack area (1.007 at 20 um, 1.017 at
+// 10 um). Inclined, it is not: 3.06 G_f at 22.5 deg and 2.58 G_f at 45 deg (20 um cells, 9.4 us: the damaged zone
+// about two cells wide and still spreading), 2.10 at 45 deg on 10 um cells. The Hillerborg length is the cell
+// size whatever the band's direction, so a band at an angle to the grid dissipates G_f several times per unit
+// area. That case is the DISABLED_ test below, which fails today (issue 11, item 3: the damage dissipation of a
+// cut stands for 0.8-2 times its real new surface, and primary and segment bands run at 30-50 deg to the grid).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <string>
+
+#include "../support/scene_builders.hpp"
+#include "solver/simulation.hpp"
+
+using namespace mpmcut;
+using namespace mpmcut::testing;
+
+namespace {
+
+constexpr double kE = 113.8e9, kNu = 0.342, kRho = 4430.0;  // Ti-6Al-4V elastic constants
+constexpr double kYield = 200e6;                             // Pa, as the aligned tests (test_hillerborg_bar.cpp)
+constexpr double kFractureEnergy = 500.0;                    // J/m^2: u_f = 2 G_f / sigma_y = 5 um (linear law)
+
+MaterialParameters band_material(const std::string& name, double failure_strain) {
+  MaterialParameters m;
+  m.name = name;
+  m.model = MaterialModel::JohnsonCook;
+  m.density = kRho;
+  m.youngs_modulus = kE;
+  m.poisson_ratio = kNu;
+  m.specific_heat = 526.3;
+  m.taylor_quinney = 0.0;  // no heating, no thermal softening
+  m.melting_temperature = 1878.0;
+  m.jc_A = kYield;
+  m.jc_B = 0.0;  // perfectly plastic: the linear law dissipates G_f exactly
+  m.jc_C = 0.0;
+  m.damage_enabled = true;
+  m.jc_D1 = failure_strain;
+  m.min_failure_strain = std::min(0.01, failure_strain);
+  m.damage_evolution = DamageEvolution::Linear;
+  m.fracture_energy = kFractureEnergy;
+  m.max_damage = 0.999;
+  return m;
+}
+
+// A strip n0 <= n <= n1 across the layer, 0 <= s <= L along it, in the layer's frame (origin o, angle theta).
+BodySpec strip(const std::string& name, const std::string& material, double n0, double n1, double L, double theta,
+               const Vec2& o, Vec2 velocity) {
+  const Vec2 s(std::cos(theta), std::sin(theta)), n(-std::sin(theta), std::cos(theta));
+  BodySpec b;
+  b.name = name;
+  b.material = material;
+  b.shape.kind = ShapeKind::Polygon;
+  b.shape.polygon.vertices = {o + n0 * n, o + L * s + n0 * n, o + L * s + n1 * n, o + n1 * n};
+  b.particles_per_cell = 2;
+  b.velocity = velocity;
+  return b;
+}
+
+// Dissipation per unit length of the layer's middle over G_f, after `slip_time` of sliding.
+double band_dissipation_over_gf(double theta_deg, double h, double slip_time) {
+  const double theta = theta_deg * std::numbers::pi / 180.0, L = 30 * h, H = 4 * h, v0 = 5.0, d = h / 2;
+  const Vec2 s(std::cos(theta), std::sin(theta)), n(-std::sin(theta), std::cos(theta));
+  const Vec2 o(3 * h + 8 * h * std::sin(theta), 3 * h);
+  Scene scene;
+  scene.grid = {h, Vec2(0, 0), Vec2(L * std::cos(theta) + 20 * h, L * std::sin(theta) + H + 20 * h)};
+  scene.solver.cfl = 0.4;
+  scene.materials.push_back(band_material("layer", 0.1));
+  scene.materials.push_back(band_material("seed", 0.02));
+  scene.materials.push_back(elastic_material("heavy", kE * 1e4, kNu, kRho * 1e4));
+  const double mid = 0.5 * H;
+  scene.bodies.push_back(strip("anchor", "heavy", -2 * h, 0.0, L, theta, o, Vec2::Zero()));
+  scene.bodies.push_back(strip("lower layer", "layer", 0.0, mid - 0.5 * d, L, theta, o, Vec2::Zero()));
+  scene.bodies.push_back(strip("seed", "seed", mid - 0.5 * d, mid + 0.5 * d, L, theta, o, Vec2::Zero()));
+  scene.bodies.push_back(strip("upper layer", "layer", mid + 0.5 * d, H, L, theta, o, Vec2::Zero()));
+  scene.bodies.push_back(strip("driver", "heavy", H, H + 2 * h, L, theta, o, v0 * s));
+  Simulation sim(scene);
+  auto& P = sim.particles();
+  for (std::size_t p = 0; p < P.size(); ++p)
+    if (P.material[p] != 2) P.velocity[p] = v0 * std::clamp((P.position[p] - o).dot(n) / H, 0.0, 1.0) * s;
+  while (sim.time() < slip_time) sim.step();
+  double dissipation = 0.0;
+  for (std::size_t p = 0; p < P.size(); ++p) {
+    const double along = (P.position[p] - o).dot(s);
+    if (along >= 0.2 * L && along <= 0.8 * L) dissipation += P.damage_dissipation[p];
+  }
+  const double ratio = dissipation / (kFractureEnergy * 0.6 * L);
+  std::printf("band at %.1f deg to the grid, h = %.0f um: dissipation / (G_f length) = %.3f\n", theta_deg, h * 1e6,
+              ratio);
+  return ratio;
+}
+
+// Initiation of the seed (0.02 of the layer's shear), the band's softening slip u_f and a margin, at 5 m/s.
+double slip_time(double h) { return 3.0 * (0.02 * 4 * h + 2 * 2 * kFractureEnergy / kYield + 0.2 * h) / 5.0; }
+
+}  // namespace
+
+// Aligned: the band is the seed's cell row (one cell wide), for two cell sizes.
+TEST(HillerborgBandOrientation, ABandAlongTheGridChosenByTheGridDissipatesFractureEnergy) {
+  for (double h : {20e-6, 10e-6}) EXPECT_NEAR(band_dissipation_over_gf(0.0, h, slip_time(h)), 1.0, 0.05) << h;
+}
+
+// Inclined: fails today (2-3 G_f, see the file's header); run with --gtest_also_run_disabled_tests.
+TEST(HillerborgBandOrientation, DISABLED_ABandInclinedToTheGridDissipatesFractureEnergy) {
+  for (double theta : {22.5, 45.0})
+    EXPECT_NEAR(band_dissipation_over_gf(theta, 20e-6, slip_time(20e-6)), 1.0, 0.1) << theta;
+}
