@@ -23,6 +23,7 @@
 #include <numbers>
 #include <string>
 
+#include "../support/hillerborg_material.hpp"
 #include "../support/scene_builders.hpp"
 #include "solver/simulation.hpp"
 
@@ -31,30 +32,10 @@ using namespace mpmcut::testing;
 
 namespace {
 
-constexpr double kE = 113.8e9, kNu = 0.342, kRho = 4430.0;  // Ti-6Al-4V elastic constants
-constexpr double kYield = 200e6;                             // Pa, as the aligned tests (test_hillerborg_bar.cpp)
-constexpr double kFractureEnergy = 500.0;                    // J/m^2: u_f = 2 G_f / sigma_y = 5 um (linear law)
+using namespace mpmcut::testing::hillerborg;
 
 MaterialParameters band_material(const std::string& name, double failure_strain) {
-  MaterialParameters m;
-  m.name = name;
-  m.model = MaterialModel::JohnsonCook;
-  m.density = kRho;
-  m.youngs_modulus = kE;
-  m.poisson_ratio = kNu;
-  m.specific_heat = 526.3;
-  m.taylor_quinney = 0.0;  // no heating, no thermal softening
-  m.melting_temperature = 1878.0;
-  m.jc_A = kYield;
-  m.jc_B = 0.0;  // perfectly plastic: the linear law dissipates G_f exactly
-  m.jc_C = 0.0;
-  m.damage_enabled = true;
-  m.jc_D1 = failure_strain;
-  m.min_failure_strain = std::min(0.01, failure_strain);
-  m.damage_evolution = DamageEvolution::Linear;
-  m.fracture_energy = kFractureEnergy;
-  m.max_damage = 0.999;
-  return m;
+  return layer_material(name, DamageEvolution::Linear, failure_strain);
 }
 
 // A strip n0 <= n <= n1 across the layer, 0 <= s <= L along it, in the layer's frame (origin o, angle theta).
