@@ -460,13 +460,12 @@ void check_body_overlaps(TableReader& t, const Scene& scene) {
 // A body that starts inside a rigid body is pushed out of it in one step, with a huge, unphysical impulse.
 void check_rigid_overlaps(TableReader& t, const Scene& scene) {
   const RigidBodySpec& rigid = scene.rigid_bodies.back();
-  const RigidPolygon outline(rigid.polygon, rigid.rounding_radius);
-  const Vec2 grow = Vec2::Constant(rigid.rounding_radius);
+  const RigidPolygon outline(rigid.polygon, rigid.rounding_radius);  // its box includes the rounding
   for (const BodySpec& body : scene.bodies) {
     // A particle on the outline touches it (a punch whose rounding reaches the body's first particle row exactly).
     const double tolerance = 1e-6 * scene.grid.cell_size / body.particles_per_cell;
     Vec2 normal;
-    if (const auto x = first_point_inside(body, scene.grid, outline.lower() - grow, outline.upper() + grow,
+    if (const auto x = first_point_inside(body, scene.grid, outline.lower(), outline.upper(),
                                           [&](const Vec2& p) { return outline.signed_distance(p, normal) < -tolerance; }))
       t.fail("polygon", fmt::format("rigid body \"{}\" overlaps body \"{}\" at the start (the body's particle at {} "
                                     "lies inside it): place the rigid body outside the deformable bodies; it may touch "
@@ -482,11 +481,10 @@ void check_friction_heat(TableReader& t, const Scene& scene) {
   const RigidBodySpec& rigid = scene.rigid_bodies.back();
   if (rigid.friction <= 0.0 || rigid.friction_heat_share <= 0.0) return;
   const double T = scene.solver.end_time, margin = 2.0 * scene.grid.cell_size;
-  Vec2 r_lo = rigid.polygon.vertices.front(), r_hi = r_lo;
-  for (const Vec2& v : rigid.polygon.vertices) r_lo = r_lo.cwiseMin(v), r_hi = r_hi.cwiseMax(v);
-  const Vec2 r_move = T * rigid.velocity, r_grow = Vec2::Constant(rigid.rounding_radius + margin);
-  r_lo = r_lo.cwiseMin(r_lo + r_move) - r_grow;
-  r_hi = r_hi.cwiseMax(r_hi + r_move) + r_grow;
+  const RigidPolygon outline(rigid.polygon, rigid.rounding_radius);  // its box includes the rounding
+  const Vec2 r_move = T * rigid.velocity, r_grow = Vec2::Constant(margin);
+  const Vec2 r_lo = outline.lower().cwiseMin(outline.lower() + r_move) - r_grow;
+  const Vec2 r_hi = outline.upper().cwiseMax(outline.upper() + r_move) + r_grow;
   for (const BodySpec& body : scene.bodies) {
     const MaterialParameters& m = scene.materials[scene.material_index(body.material)];
     Vec2 lo, hi;
