@@ -15,6 +15,9 @@
 // size whatever the band's direction, so a band at an angle to the grid dissipates G_f several times per unit
 // area. That case is the DISABLED_ test below, which fails today (issue 11, item 3: the damage dissipation of a
 // cut stands for 0.8-2 times its real new surface, and primary and segment bands run at 30-50 deg to the grid).
+// Part of the excess is tension stored before initiation, which a failure strain that falls with triaxiality removes
+// (second DISABLED_ test: 2.46 and 2.55); the rest is the zone's width. A direction-dependent length and a second
+// velocity field across failed particles were tried and do not remove it (docs/theory_materials.md §10).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -34,8 +37,21 @@ namespace {
 
 using namespace mpmcut::testing::hillerborg;
 
-MaterialParameters band_material(const std::string& name, double failure_strain) {
-  return layer_material(name, DamageEvolution::Linear, failure_strain);
+// How the failure strain depends on the triaxiality eta.
+enum class Initiation {
+  Constant,  // eps_f the same at every eta (hydrostatic tension builds up before initiation)
+  Triaxial,  // eps_f exp(-3 eta): initiation soon in tension, as Ti-6Al-4V's sets (D3 < 0)
+};
+
+MaterialParameters band_material(const std::string& name, double failure_strain, Initiation initiation) {
+  MaterialParameters m = layer_material(name, DamageEvolution::Linear, failure_strain);
+  if (initiation == Initiation::Triaxial) {
+    m.jc_D1 = 0.0;
+    m.jc_D2 = failure_strain;
+    m.jc_D3 = -3.0;
+    m.min_failure_strain = 1e-3;
+  }
+  return m;
 }
 
 // A strip n0 <= n <= n1 across the layer, 0 <= s <= L along it, in the layer's frame (origin o, angle theta).
@@ -53,15 +69,16 @@ BodySpec strip(const std::string& name, const std::string& material, double n0, 
 }
 
 // Dissipation per unit length of the layer's middle over G_f, after `slip_time` of sliding.
-double band_dissipation_over_gf(double theta_deg, double h, double slip_time) {
+double band_dissipation_over_gf(double theta_deg, double h, double slip_time,
+                                Initiation initiation = Initiation::Constant) {
   const double theta = theta_deg * std::numbers::pi / 180.0, L = 30 * h, H = 4 * h, v0 = 5.0, d = h / 2;
   const Vec2 s(std::cos(theta), std::sin(theta)), n(-std::sin(theta), std::cos(theta));
   const Vec2 o(3 * h + 8 * h * std::sin(theta), 3 * h);
   Scene scene;
   scene.grid = {h, Vec2(0, 0), Vec2(L * std::cos(theta) + 20 * h, L * std::sin(theta) + H + 20 * h)};
   scene.solver.cfl = 0.4;
-  scene.materials.push_back(band_material("layer", 0.1));
-  scene.materials.push_back(band_material("seed", 0.02));
+  scene.materials.push_back(band_material("layer", 0.1, initiation));
+  scene.materials.push_back(band_material("seed", 0.02, initiation));
   scene.materials.push_back(elastic_material("heavy", kE * 1e4, kNu, kRho * 1e4));
   const double mid = 0.5 * H;
   scene.bodies.push_back(strip("anchor", "heavy", -2 * h, 0.0, L, theta, o, Vec2::Zero()));
@@ -80,8 +97,8 @@ double band_dissipation_over_gf(double theta_deg, double h, double slip_time) {
     if (along >= 0.2 * L && along <= 0.8 * L) dissipation += P.damage_dissipation[p];
   }
   const double ratio = dissipation / (kFractureEnergy * 0.6 * L);
-  std::printf("band at %.1f deg to the grid, h = %.0f um: dissipation / (G_f length) = %.3f\n", theta_deg, h * 1e6,
-              ratio);
+  std::printf("band at %.1f deg to the grid, h = %.0f um, %s failure strain: dissipation / (G_f length) = %.3f\n",
+              theta_deg, h * 1e6, initiation == Initiation::Constant ? "constant" : "triaxial", ratio);
   return ratio;
 }
 
@@ -99,4 +116,11 @@ TEST(HillerborgBandOrientation, ABandAlongTheGridChosenByTheGridDissipatesFractu
 TEST(HillerborgBandOrientation, DISABLED_ABandInclinedToTheGridDissipatesFractureEnergy) {
   for (double theta : {22.5, 45.0})
     EXPECT_NEAR(band_dissipation_over_gf(theta, 20e-6, slip_time(20e-6)), 1.0, 0.1) << theta;
+}
+
+// The same with a failure strain that falls with triaxiality: no stored tension, every failed particle dissipates its
+// share G_f V0/L (1.01-1.02), and what is left is the zone's width: 2.46 at 22.5 deg, 2.55 at 45 deg (fails today).
+TEST(HillerborgBandOrientation, DISABLED_ABandInclinedToTheGridDissipatesFractureEnergyWithTriaxialInitiation) {
+  for (double theta : {22.5, 45.0})
+    EXPECT_NEAR(band_dissipation_over_gf(theta, 20e-6, slip_time(20e-6), Initiation::Triaxial), 1.0, 0.1) << theta;
 }
