@@ -55,7 +55,7 @@ struct SweepOptions {
 // --vary KEY=V1,V2,...: the key and its values (texts as given, each becomes `--set KEY=value`).
 struct VariedKey {
   std::string key;
-  std::vector<std::string> values;  // {""}: nothing varied
+  std::vector<std::string> values;  // the texts as given
 };
 
 VariedKey parse_vary(const std::string& text) {
@@ -224,11 +224,22 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
         // Names carry 6 significant digits: two values closer than that would share one directory, and one
         // case's results would replace the other's (--speeds 20,20.0000001 ran both into v20mps_h0.1mm).
         for (const Case& earlier : cases)
-          if (earlier.dir == out / name)
+          if (earlier.dir == out / name) {
+            std::string keys;
+            for (std::size_t k = 0; k < varied.size(); ++k)
+              keys += fmt::format(", {} {} and {}", varied[k].key, earlier.values[k], values[k]);
             throw InputError(fmt::format(
-                "two cases of the grid would share the directory {} (speeds {} and {} m/s, feeds {} and {} m): the case "
-                "names carry 6 significant digits; give values that differ within them",
-                name, earlier.speed, v, earlier.feed, h));
+                "two cases of the grid would share the directory {} (speeds {} and {} m/s, feeds {} and {} m{}): the "
+                "case names carry 6 significant digits; give values that differ within them",
+                name, earlier.speed, v, earlier.feed, h, keys));
+          }
+        // The values together (a feed and an edge radius each valid alone, but the radius beyond 10 feeds): every
+        // case reads before anything runs or any directory is made.
+        std::vector<std::string> assignments = {fmt::format("cutting.cutting_speed={}", v),
+                                                fmt::format("cutting.uncut_chip_thickness={}", h)};
+        if (n > 0) assignments.push_back(fmt::format("cutting.cell_size={}", h / n));
+        for (std::size_t k = 0; k < varied.size(); ++k) assignments.push_back(varied[k].key + "=" + values[k]);
+        check_value_reads(fmt::format("the sweep's case {}", name), assignments);
         cases.push_back({v, h, n, values, out / name});
         ChildRun run;
         run.name = name;
@@ -237,11 +248,7 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
                     "--no-progress", "--threads", std::to_string(o.threads)};
         for (const std::string& s : o.overrides) run.args.insert(run.args.end(), {"--set", s});
         // After the user's --set: the grid values win.
-        run.args.insert(run.args.end(), {"--set", fmt::format("cutting.cutting_speed={}", v), "--set",
-                                         fmt::format("cutting.uncut_chip_thickness={}", h)});
-        if (n > 0) run.args.insert(run.args.end(), {"--set", fmt::format("cutting.cell_size={}", h / n)});
-        for (std::size_t k = 0; k < varied.size(); ++k)
-          run.args.insert(run.args.end(), {"--set", varied[k].key + "=" + values[k]});
+        for (const std::string& s : assignments) run.args.insert(run.args.end(), {"--set", s});
         run.log_file = out / "logs" / (name + ".log");
         runs.push_back(run);
       }

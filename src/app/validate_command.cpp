@@ -13,7 +13,6 @@
 #include "app/path_option.hpp"
 #include "cutting/input_plausibility.hpp"
 #include "io/atomic_file.hpp"
-#include "cutting/input_plausibility.hpp"
 #include "io/input_error.hpp"
 #include "io/scene_writer.hpp"
 #include "run/case_loading.hpp"

@@ -48,7 +48,7 @@ struct RigidContactSettings {
   double contact_distance = 0.0;    // m: a node's material within this of the surface can be in contact
   ContactDetection detection = ContactDetection::Node;
   double node_mass_cutoff = 0.0;    // kg/m: lighter nodes count as empty
-  double penalty_stiffness = 1.0;   // penalty detection: k = this x m / dt^2 (penalty_law.hpp)
+  double penalty_stiffness = 1.0;   // penalty detection: k = this x m / dt_stable^2 (penalty_law.hpp)
 };
 
 class RigidContact {

@@ -49,7 +49,8 @@ CuttingParameters read_cutting_parameters(TableReader& t) {
   c.cell_size = t.number("cell_size", c.cell_size);
   // Not below grid.cell_size's 1 nm: the expanded scene must read back (1e-300 was taken, and its scene refused).
   t.check("cell_size", c.cell_size == 0.0 || (c.cell_size >= 1e-9 && c.cell_size <= 0.5 * c.uncut_chip_thickness),
-          "0 (= t0/10) or a length in [1e-9, uncut_chip_thickness/2] m", c.cell_size);
+          fmt::format("0 (= t0/10) or a length in [1e-9, uncut_chip_thickness/2 = {:.4g}] m", 0.5 * c.uncut_chip_thickness),
+          c.cell_size);
   if (c.cell_size == 0.0 && c.uncut_chip_thickness / 10.0 < 1e-9)
     t.fail("cell_size", fmt::format("is 0, i.e. t0/10 = {:g} m, below the grid's 1 nm: give a cell_size of at least "
                                     "1e-9 m",

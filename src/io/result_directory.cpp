@@ -18,13 +18,8 @@ namespace fs = std::filesystem;
       fmt::format("result directory '{}': {}: {}", dir.string(), what, ec.message()));
 }
 
+// Only for a directory that holds an mpmcut result (ResultDirectory::open checks its summary.json first).
 void clear_contents(const fs::path& dir) {
-  if (!fs::exists(dir / "summary.json")) {
-    throw std::runtime_error(fmt::format(
-        "result directory '{}' is not empty and has no summary.json, so it does not look like an "
-        "mpmcut result; refusing to delete its contents even with --force. Choose another --out.",
-        dir.string()));
-  }
   std::error_code ec;
   for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
     fs::remove_all(e.path(), ec);
@@ -66,8 +61,8 @@ ResultDirectory ResultDirectory::open(const fs::path& dir, bool force) {
     const bool empty = fs::is_empty(dir, ec);
     if (ec) fail(dir, "cannot list its contents", ec);
     if (!empty) {
-      // A directory that --force would not clear either is told so at once.
-      if (!force && !fs::exists(dir / "summary.json"))
+      // A directory that --force would not clear either is told so at once, with or without --force.
+      if (!fs::exists(dir / "summary.json"))
         throw std::runtime_error(fmt::format(
             "result directory '{}' exists, is not empty and has no summary.json, so it is not an mpmcut result; "
             "--force does not delete such a directory's contents. Choose another --out.",

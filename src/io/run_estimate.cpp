@@ -30,12 +30,6 @@ double shape_area(const Shape& s) {
   return 0.0;
 }
 
-// Longitudinal (P-)wave speed of a linear elastic material, the speed the CFL step uses at rest.
-double p_wave_speed(const MaterialParameters& m) {
-  const double nu = m.poisson_ratio, E = m.youngs_modulus;
-  return std::sqrt(E * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu) * m.density));
-}
-
 }  // namespace
 
 RunEstimate estimate_run(const Scene& scene) {
@@ -61,7 +55,7 @@ RunEstimate estimate_run(const Scene& scene) {
     dt = scene.solver.fixed_time_step;
   } else {
     double c_max = 0.0;
-    for (const MaterialParameters& m : scene.materials) c_max = std::max(c_max, p_wave_speed(m));
+    for (const MaterialParameters& m : scene.materials) c_max = std::max(c_max, m.p_wave_speed());
     if (c_max + v_max > 0.0) dt = scene.solver.cfl * h / (c_max + v_max);
     // Mass scaling multiplies the inertia by f, so the wave speed, and the step with it, by sqrt(f);
     // a target step, where given, is what the factor is chosen to reach.

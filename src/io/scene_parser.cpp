@@ -96,7 +96,14 @@ std::string canonical_path(const std::vector<PathStep>& steps) {
 void apply_override(toml::table& root, const std::string& text, InputSource& source) {
   const std::string prefix = fmt::format("{}: --set '{}': ", source.name, text);
   const auto eq = text.find('=');
-  if (eq == std::string::npos) throw InputError(prefix + "expected key=value");
+  if (eq == std::string::npos) {
+    // `run --set KEY=V case.toml` gives the case file to --set (CLI11 takes every value up to the next option).
+    const bool case_file = text.size() > 5 && text.compare(text.size() - 5, 5, ".toml") == 0;
+    throw InputError(prefix + "expected key=value" +
+                     (case_file ? " (is it the case file? Give the case file before --set: mpmcut run CASE.toml --set "
+                                  "KEY=VALUE)"
+                                : ""));
+  }
   const std::vector<PathStep> steps = parse_key_path(trim(std::string_view(text).substr(0, eq)), prefix);
   const std::string value_text = trim(std::string_view(text).substr(eq + 1));
   source.overrides.push_back({canonical_path(steps), text});
@@ -285,7 +292,7 @@ SolverSpec read_solver(TableReader t, SolverSpec s) {
        {"penalty", ContactDetection::Penalty}},
       s.contact_detection);
   s.penalty_stiffness = t.number("penalty_stiffness", s.penalty_stiffness,
-                                 Range::closed(0.01, 2.0, "", "x m / dt^2 per unit overlap; contact_detection = \"penalty\""));
+                                 Range::closed(0.01, 2.0, "", "x m / dt_stable^2 per unit overlap; contact_detection = \"penalty\""));
   t.reject_unknown_keys();
   return s;
 }
@@ -485,12 +492,17 @@ void check_friction_heat(TableReader& t, const Scene& scene) {
   const Vec2 r_move = T * rigid.velocity, r_grow = Vec2::Constant(margin);
   const Vec2 r_lo = outline.lower().cwiseMin(outline.lower() + r_move) - r_grow;
   const Vec2 r_hi = outline.upper().cwiseMax(outline.upper() + r_move) + r_grow;
+  // A body at rest can be pushed into the rigid body by another one: every body may travel as far as the fastest
+  // body or rigid body of the scene in any direction, besides its own initial motion.
+  double fastest = 0.0;
+  for (const BodySpec& b : scene.bodies) fastest = std::max(fastest, b.velocity.norm());
+  for (const RigidBodySpec& r : scene.rigid_bodies) fastest = std::max(fastest, r.velocity.norm());
   for (const BodySpec& body : scene.bodies) {
     const MaterialParameters& m = scene.materials[scene.material_index(body.material)];
     Vec2 lo, hi;
     body.shape.bounds(lo, hi);
     const Vec2 move = T * body.velocity;
-    const Vec2 grow = Vec2::Constant(0.5 * scene.body_force.norm() * T * T + margin);
+    const Vec2 grow = Vec2::Constant(0.5 * scene.body_force.norm() * T * T + fastest * T + margin);
     lo = lo.cwiseMin(lo + move) - grow;
     hi = hi.cwiseMax(hi + move) + grow;
     const bool reachable = (lo.array() <= r_hi.array()).all() && (r_lo.array() <= hi.array()).all();
@@ -589,7 +601,7 @@ std::string read_case_text(const std::filesystem::path& file) {
     throw InputError(fmt::format("{}: cannot read case file: {}", file.string(),
                                  std::filesystem::exists(file, ec) ? "not a regular file" : "no such file"));
   std::optional<std::string> text = read_whole_file(file);
-  if (!text) throw InputError(fmt::format("{}: cannot read case file", file.string()));
+  if (!text) throw InputError(fmt::format("{}: cannot read case file: {}", file.string(), unreadable_reason(file)));
   return std::move(*text);
 }
 

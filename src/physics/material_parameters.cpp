@@ -11,8 +11,9 @@ namespace mpmcut {
 double MaterialParameters::p_wave_speed() const {
   // The bulk modulus the equation of state has at the reference density (Mie-Grueneisen: rho0 c0^2), as the
   // material's own wave speed at the start: a fixed step checked against E and nu alone was refused below the
-  // run's own limit.
-  const double K = eos == EquationOfState::MieGruneisen ? density * mg_c0 * mg_c0 : bulk_modulus();
+  // run's own limit. The elastic model has no equation of state (its pressure is K from E and nu whatever `eos` says).
+  const bool mie_gruneisen = model == MaterialModel::JohnsonCook && eos == EquationOfState::MieGruneisen;
+  const double K = mie_gruneisen ? density * mg_c0 * mg_c0 : bulk_modulus();
   return std::sqrt((K + 4.0 * shear_modulus() / 3.0) / density);
 }
 

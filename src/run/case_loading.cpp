@@ -11,6 +11,7 @@
 #include "io/scene_parser.hpp"
 #include "io/scene_writer.hpp"
 #include "io/toml_reader.hpp"
+#include "solver/fixed_step_limit.hpp"
 
 namespace mpmcut {
 
@@ -38,12 +39,7 @@ void check_fixed_time_step(TableReader& top, const Scene& s) {
   const double limit =
       s.grid.cell_size / (wave_speed / std::sqrt(std::max(1.0, s.solver.mass_scaling_factor)) + speed);
   if (!(fixed > limit * (1.0 + 1e-12))) return;
-  top.table("solver").fail(
-      "fixed_time_step",
-      fmt::format("= {:g} s exceeds the stability limit of the explicit update at the start, cell / (wave speed + "
-                  "fastest velocity) = {:g} s: the run would blow up. Use fixed_time_step = 0 (the CFL step, {:g} s at "
-                  "solver.cfl = {:g}) or at most {:g} s",
-                  fixed, limit, s.solver.cfl * limit, s.solver.cfl, limit));
+  top.table("solver").fail("fixed_time_step", "= " + fixed_step_beyond_stability(fixed, limit, s.solver.cfl));
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include "contact/rigid_heat_transfer.hpp"
 #include "core/cell_order.hpp"
 #include "core/deterministic_sum.hpp"
+#include "solver/fixed_step_limit.hpp"
 #include "solver/grid_update.hpp"
 #include "solver/seeding.hpp"
 #include "solver/time_step_to_target.hpp"
@@ -64,11 +65,7 @@ void Simulation::check_fixed_time_step() const {
   if (fixed <= 0.0) return;
   const double limit = mechanical_time_step() / scene_.solver.cfl;  // the CFL step at cfl = 1
   if (fixed <= limit) return;
-  throw std::invalid_argument(fmt::format(
-      "solver.fixed_time_step = {:g} s exceeds the stability limit of the explicit update at the start, cell / (wave "
-      "speed + fastest velocity) = {:g} s: the run would blow up. Use fixed_time_step = 0 (the CFL step, {:g} s at "
-      "solver.cfl = {:g}) or at most {:g} s",
-      fixed, limit, scene_.solver.cfl * limit, scene_.solver.cfl, limit));
+  throw std::invalid_argument("solver.fixed_time_step = " + fixed_step_beyond_stability(fixed, limit, scene_.solver.cfl));
 }
 
 // Mass scaling (docs/mass_scaling.md): a fixed factor, or the one that brings the initial

@@ -180,7 +180,11 @@ def check_vary(binary, case, scratch):
                         # each value reads alone, one combination leaves no tool wedge
                         (["--vary", "cutting.rake_angle_deg=0,40", "--vary", "cutting.clearance_angle_deg=10,41"],
                          ["--vary: the combination cutting.rake_angle_deg=40, cutting.clearance_angle_deg=41",
-                          "rake + clearance < 80"])):
+                          "rake + clearance < 80"]),
+                        # each reads alone with the case's own feed; together the edge is beyond 10 feeds (the case
+                        # failed after the sweep had made its directory, and the sweep exited 0)
+                        (["--feeds", "5e-6", "--set", "cutting.cell_size=0", "--vary", "cutting.edge_radius=60e-6"],
+                         ["the sweep's case v20mps_h0.005mm_edge_radius60e-6", "below 10 uncut chip thicknesses"])):
         p = subprocess.run([binary, "sweep", case, "--speeds", "20", "--out", out + "_bad", *args], capture_output=True,
                            text=True, timeout=60)
         if p.returncode != 2 or not all(w in p.stderr for w in words) or os.path.exists(out + "_bad"):

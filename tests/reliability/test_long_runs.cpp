@@ -259,7 +259,7 @@ TEST_F(LongRuns, ExistingResultDirectoryNeedsForce) {
   write_file(out("not_a_result") / "thesis.tex", "precious");
   r = run("not_a_result", {"--set", "solver.max_steps=5", "--force"});
   EXPECT_EQ(r.exit_code, 4) << r.output;
-  EXPECT_NE(r.output.find("does not look like an mpmcut result"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("is not an mpmcut result; --force does not delete"), std::string::npos) << r.output;
   EXPECT_EQ(read_file(out("not_a_result") / "thesis.tex"), "precious");
   // Without --force it says at once that --force would not help (it suggested --force, which then refused).
   r = run("not_a_result", {"--set", "solver.max_steps=5"});

@@ -19,6 +19,7 @@
 #include "io/material_library.hpp"
 #include "run/case_loading.hpp"
 #include "io/scene_writer.hpp"
+#include "io/whole_file.hpp"
 
 namespace mpmcut {
 
@@ -270,6 +271,13 @@ TEST(SceneValidation, FrictionalHeatNeedsASpecificHeat) {
   EXPECT_EQ(error_of(edit("library = \"elastic-unit\"", no_heat_capacity, far)), "");
   expect_error(edit("library = \"elastic-unit\"", no_heat_capacity, far + "velocity = [-0.5, 0.0]\n"), "friction = 0.3",
                {"has no specific_heat"});
+  // A body at rest that another body can push into the rigid body needs it too (every body may travel as far as the
+  // fastest one): the run made the pad's temperature NaN at step 280.
+  const std::string hammer = "[[material]]\nname = \"hot\"\nlibrary = \"elastic-unit\"\n[[body]]\nname = \"hammer\"\n"
+                             "material = \"hot\"\nrectangle = { min = [0.0, 0.2], max = [0.1, 0.4] }\n";
+  EXPECT_EQ(error_of(edit("library = \"elastic-unit\"", no_heat_capacity, far + hammer)), "");
+  expect_error(edit("library = \"elastic-unit\"", no_heat_capacity, far + hammer + "velocity = [0.2, 0.0]\n"),
+               "friction = 0.3", {"material \"m\" of body \"b\" has no specific_heat"});
 }
 
 TEST(SceneValidation, ParticlesPerCellOutOfRange) {
@@ -485,6 +493,9 @@ TEST(SceneValidation, MissingFileNamesThePath) {
     EXPECT_NE(std::string(e.what()).find("no such file"), std::string::npos) << e.what();
   }
   EXPECT_THROW(load_scene(kCases), InputError);  // a directory
+  // The reason, for the readers that only get "could not read" back (calibration, measurement and material files).
+  EXPECT_EQ(unreadable_reason("/nonexistent/dir/case.toml"), "no such file");
+  EXPECT_EQ(unreadable_reason(kCases), "a directory, not a file");
 }
 
 // --- overrides --------------------------------------------------------------------------------
@@ -525,6 +536,10 @@ TEST(SceneOverrides, UnknownKeysAndBadValuesNameTheOverride) {
   EXPECT_NE(m.find("index 3 is out of range: 'body' has 1 entries"), std::string::npos) << m;
   m = error_of(kBase, {"solver.cfl"});
   EXPECT_NE(m.find("expected key=value"), std::string::npos) << m;
+  EXPECT_EQ(m.find("case file"), std::string::npos) << m;
+  // `run --set KEY=V case.toml`: CLI11 gives the case file to --set.
+  m = error_of(kBase, {"cases/ti64_quick.toml"});
+  EXPECT_NE(m.find("expected key=value (is it the case file? Give the case file before --set"), std::string::npos) << m;
   m = error_of(kBase, {"title.x=1"});
   EXPECT_NE(m.find("'title' is not a table"), std::string::npos) << m;
   // A key set twice: the error is of the value that stands, the last override's (it named the first).

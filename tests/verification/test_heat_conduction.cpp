@@ -62,8 +62,6 @@ TEST(HeatConduction, FixedFaceTemperatureBoundsTheSlab) {
   }
 }
 
-// Second order in the cell: 0.25 % at 25 cells, 0.016 % at 100 (16x for 4x finer). The reset of the face
-// node's one-sided mean made it first order (8.1 % and 2.0 %, 4x): a ratio above 8 fails that.
 // Two faces held at 400 and 300 K: the steady state is the straight line between them, up to the faces. With the
 // face nodes' one-sided means reset to the faces' values the first cell at each end stood 3/8 h |grad T| off it
 // (0.75 K here, 0.75 % of the difference).
@@ -79,6 +77,8 @@ TEST(HeatConduction, TwoFixedFacesGiveTheLinearSteadyProfile) {
   EXPECT_LT(worst, 0.1) << "K off the straight line";
 }
 
+// Second order in the cell: 0.25 % at 25 cells, 0.016 % at 100 (16x for 4x finer). The reset of the face
+// node's one-sided mean made it first order (8.1 % and 2.0 %, 4x): a ratio above 8 fails that.
 TEST(HeatConduction, ErrorFallsWithCellSize) {
   EXPECT_GT(max_error_vs_erfc(ShapeFunctionKind::UGimp, 25, 0.02),
             8.0 * max_error_vs_erfc(ShapeFunctionKind::UGimp, 100, 0.02));
