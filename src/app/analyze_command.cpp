@@ -30,6 +30,10 @@ namespace {
 struct AnalyzeError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+// Another run writes into the directory: exit code 4, as for `run` and `resume` into a directory in use.
+struct DirectoryInUse : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
 // The snapshot files of a run in time order: from particles.pvd, which lists exactly the
 // snapshots that were completed.
@@ -68,7 +72,7 @@ int analyze(const fs::path& dir, const std::string& snapshot) {
   try {
     lock = DirectoryLock::acquire(dir);
   } catch (const std::runtime_error& e) {
-    throw AnalyzeError(fmt::format("{} (mpmcut analyze: run it once that run has finished or stopped)", e.what()));
+    throw DirectoryInUse(fmt::format("{} (mpmcut analyze: run it once that run has finished or stopped)", e.what()));
   }
   const fs::path summary_file = dir / "summary.json";
   RunSummary summary = read_summary(summary_file);
@@ -114,6 +118,9 @@ int analyze_result_directory(const fs::path& dir, const std::string& snapshot) {
   } catch (const AnalyzeError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return kExitInputError;
+  } catch (const DirectoryInUse& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return kExitOutputError;
   } catch (const std::exception& e) {
     // Unreadable snapshot or summary, unwritable directory: the messages name the file.
     std::cerr << "error: " << e.what() << "\n";

@@ -48,7 +48,9 @@ void choose_material(const Options& o, ConditionRunSettings& s) {
     return;
   }
   const std::optional<std::string> text = read_whole_file(o.material_file);
-  if (!text) throw InputError(fmt::format("--material-file {}: cannot read the file", o.material_file));
+  if (!text)
+    throw InputError(fmt::format("--material-file {}: cannot read the file: {}", o.material_file,
+                                 unreadable_reason(o.material_file)));
   MaterialLibrary with_builtin = builtin_material_library();
   const std::size_t before = with_builtin.sets().size();
   with_builtin.add_file(*text, o.material_file);  // InputError at the file's line and key
@@ -80,7 +82,7 @@ namespace {
 
 DataFile read_user_file(const std::string& option, const std::string& path) {
   const std::optional<std::string> text = read_whole_file(path);
-  if (!text) throw InputError(fmt::format("{} {}: cannot read the file", option, path));
+  if (!text) throw InputError(fmt::format("{} {}: cannot read the file: {}", option, path, unreadable_reason(path)));
   return read_data_file(*text, path);
 }
 

@@ -11,4 +11,8 @@ namespace mpmcut {
 // fails (errno then says why).
 std::optional<std::string> read_whole_file(const std::filesystem::path& file);
 
+// Why `file` cannot be read, for a message: "no such file", "a directory, not a file", or the system's reason
+// (e.g. "Permission denied").
+std::string unreadable_reason(const std::filesystem::path& file);
+
 }  // namespace mpmcut

@@ -153,7 +153,8 @@ std::unique_ptr<CaseRun> open_resumed_run(const RunOptions& options) {
   try {
     lock = DirectoryLock::acquire(root);
   } catch (const std::runtime_error& e) {
-    throw refuse(e.what());
+    // Another run writing there is an output error, as for `run` (docs/reliability.md, exit codes).
+    throw RunOpenError("cannot resume '" + root.string() + "': " + e.what(), kExitOutputError);
   }
   for (const char* file : {"summary.json", "scene.toml"})
     if (!fs::exists(root / file))

@@ -62,7 +62,8 @@ nlopt_algorithm algorithm(TableReader& t, const char* key, const std::string& na
 
 CalibrationConfig read_calibration_config(const fs::path& file, std::string_view builtin_forces_csv) {
   const std::optional<std::string> text = read_whole_file(file);
-  if (!text) throw InputError(fmt::format("{}: cannot read the calibration file", file.string()));
+  if (!text)
+    throw InputError(fmt::format("{}: cannot read the calibration file: {}", file.string(), unreadable_reason(file)));
   const toml::table root = parse_toml(*text, file.string());
   TableReader t(root, "", std::make_shared<InputSource>(InputSource{file.string(), {}}));
 
@@ -166,7 +167,9 @@ CalibrationConfig read_calibration_config(const fs::path& file, std::string_view
     const std::string name = data.string("measurements", "");
     const fs::path path = name.starts_with('/') ? fs::path(name) : file.parent_path() / name;
     const std::optional<std::string> text = read_whole_file(path);
-    if (!text) data.fail("measurements", fmt::format("cannot read the measurement file {}", path.string()));
+    if (!text)
+      data.fail("measurements",
+                fmt::format("cannot read the measurement file {}: {}", path.string(), unreadable_reason(path)));
     c.measurements_source = path.string();
     measurements = read_data_file(*text, c.measurements_source);
   } else {

@@ -21,6 +21,11 @@ def test_overrides_from_a_dict_are_set_strings():
     assert mpmcut.overrides_from(["solver.cfl=0.2"]) == ["solver.cfl=0.2"]
     with pytest.raises(TypeError, match="not one string"):  # it was taken apart into characters
         mpmcut.overrides_from("solver.cfl=0.2")
+    # A value that cannot be written names its key (as every other override error does).
+    with pytest.raises(ValueError, match=r"key 'cutting.cutting_speed': 1180591620717411303424 is outside the 64-bit"):
+        mpmcut.overrides_from({"cutting.cutting_speed": 2**70})
+    with pytest.raises(TypeError, match=r"key 'solver.cfl': cannot write"):
+        mpmcut.overrides_from({"solver.cfl": object()})
 
 
 def test_cases_from_text_file_and_overrides(quick_case):
@@ -131,7 +136,9 @@ def test_analyze_waits_for_the_run_writing_into_its_directory(tmp_path, binary, 
     run = mpmcut.Run(mpmcut.load_case(quick_case, short), tmp_path / "r", threads=1)
     run.step(5)
     p = subprocess.run([binary, "analyze", str(tmp_path / "r")], capture_output=True, text=True)
-    assert p.returncode == 2 and "is in use" in p.stderr and "once that run has finished" in p.stderr, p.stderr
+    assert p.returncode == 4 and "is in use" in p.stderr and "once that run has finished" in p.stderr, p.stderr
+    p = subprocess.run([binary, "resume", str(tmp_path / "r")], capture_output=True, text=True)  # exit 4 as for run
+    assert p.returncode == 4 and "cannot resume" in p.stderr and "is in use" in p.stderr, p.stderr
     assert run.run() == "complete"
     p = subprocess.run([binary, "analyze", str(tmp_path / "r")], capture_output=True, text=True)
     assert p.returncode == 0, p.stderr

@@ -60,7 +60,13 @@ def overrides_from(overrides):
     if overrides is None:
         return []
     if isinstance(overrides, dict):
-        return [f"{key}={_toml_value(value)}" for key, value in overrides.items()]
+        texts = []
+        for key, value in overrides.items():
+            try:
+                texts.append(f"{key}={_toml_value(value)}")
+            except (ValueError, TypeError) as e:  # name the key, as every other override error does
+                raise type(e)(f"key '{key}': {e}") from None
+        return texts
     if isinstance(overrides, (str, bytes)):  # would be taken apart into characters
         raise TypeError(f"overrides: a dict {{key: value}} or a list of 'key=value' strings, not one string "
                         f"({overrides!r}: write [{overrides!r}])")
