@@ -114,13 +114,17 @@ int main(int argc, char** argv) {
       parse_checkpoint_interval(text);
       return {};
     } catch (const InputError& e) {
-      return e.what();
+      // CLI11 puts the option's name in front already.
+      std::string message = e.what();
+      const std::string own = "--checkpoint-every ";
+      if (message.starts_with(own)) message.erase(0, own.size());
+      return message;
     }
   };
   std::string checkpoint_every = "30min";
   run->add_option("--checkpoint-every", checkpoint_every,
                   "Write a restart checkpoint every N steps (5000, 5000steps) or after a wall time (600s, 10min, 2h); "
-                  "off = only on SIGINT/SIGTERM (default: 30min)")
+                  "off (or 0) = only on SIGINT/SIGTERM (default: 30min)")
       ->check(checkpoint_check);
 
   RunOptions resume_options;
@@ -178,6 +182,11 @@ int main(int argc, char** argv) {
     }
   }
 
+  // No arguments: the list of commands rather than CLI11's bare "A subcommand is required".
+  if (argc <= 1) {
+    std::cerr << app.help() << "\nerror: give a command, e.g. `mpmcut run` (the built-in default cut)\n";
+    return kExitInputError;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::RuntimeError& e) {  // a subcommand's own exit code (its callback ran)
