@@ -189,9 +189,13 @@ std::vector<MeasuredForces> read_measured_forces(const DataFile& file) {
     const auto status = r.cells.find("status");
     m.status = status == r.cells.end() || status->second.empty() ? "ok" : status->second;
     for (const auto& [key, value] : {std::pair{"h_mm", m.h_mm}, {"vc_m_per_min", m.vc_m_per_min},
-                                     {"Fc_mean_N", m.fc_N}, {"edge_radius_um", m.edge_radius_um}})
+                                     {"Fc_mean_N", m.fc_N}})
       if (!(value > 0))
         throw InputError(fmt::format("{}:{}: column '{}': must be positive, got {}", file.source, r.line, key, value));
+    // 0 is a sharp edge, as cutting.edge_radius allows (the case checks the upper bound, 10 t0).
+    if (!(m.edge_radius_um >= 0))
+      throw InputError(fmt::format("{}:{}: column 'edge_radius_um': must be 0 (a sharp edge) or positive, got {}",
+                                   file.source, r.line, m.edge_radius_um));
     const std::tuple cut{m.h_mm, m.vc_m_per_min, m.edge_radius_um, m.rake_deg.value_or(preset.rake_angle_deg),
                          m.clearance_deg.value_or(preset.clearance_angle_deg)};
     if (const auto [it, added] = line_of_cut.emplace(cut, m.line); !added)

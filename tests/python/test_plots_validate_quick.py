@@ -281,6 +281,15 @@ def check_measurements(binary, scratch):
     edges = listed(validate(binary, "--list", "--measurements", edges_file, "--out", mine + "_edges"))
     if edges != ["forces_h0.05mm_vc120mpmin_rn20um", "forces_h0.05mm_vc120mpmin_rn40um"]:
         fail(f"two edge radii at one h and speed: --list must show both, named by r_n: {edges}")
+    # A sharp edge (0) is a tool like any other (it was refused as "must be positive"); a negative radius is not.
+    with open(edges_file, "w") as f:
+        f.write("h_mm,vc_m_per_min,Fc_mean_N,Ff_mean_N,edge_radius_um\n0.05,120,110,60,0\n")
+    listed(validate(binary, "--list", "--measurements", edges_file, "--out", mine + "_sharp"))
+    with open(edges_file, "w") as f:
+        f.write("h_mm,vc_m_per_min,Fc_mean_N,Ff_mean_N,edge_radius_um\n0.05,120,110,60,-1\n")
+    bad = validate(binary, "--list", "--measurements", edges_file, "--out", mine + "_sharp_bad", expect=2)
+    if "column 'edge_radius_um': must be 0 (a sharp edge) or positive, got -1" not in bad.stderr:
+        fail(f"a negative edge radius: {bad.stderr}")
 
 
 def check_chip_observations(binary, scratch):
