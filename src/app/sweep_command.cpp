@@ -405,7 +405,8 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
     else if (resolutions.size() > 1)
       s << "Plots: convergence.png (each quantity against the cells across h). ";
     else
-      s << "Plots: forces_vs_speed.png, chip_vs_speed.png, chip_map.png. ";
+      s << "Plots: forces_vs_speed.png, chip_vs_speed.png, chip_map.png, chip_gallery_damage.png and "
+           "chip_gallery_temperature.png (the last snapshot of every case). ";
     s << "Each case: its result directory (mpmcut plot DIR draws it) and logs/<case>.log.\n";
   });
   std::cout << "wrote " << (out / "sweep.csv").string() << " and " << (out / "sweep.md").string() << "\n";

@@ -685,7 +685,8 @@ void write_validation_report(const std::vector<Condition>& conditions, const Rep
   const TextTable goals = goal_table(errors, trends, width.basis(), out);
   write_markdown({conditions, context, comparison, errors, trends, goals, unresolved_bands(conditions, kappa), width});
   std::cout << "wrote " << (out / "validation.md").string()
-            << ", validation.csv, validation_goals.csv, validation_errors.csv, validation_trends.csv, validation_runs.csv\n";
+            << ", validation.csv, validation_goals.csv, validation_errors.csv, validation_trends.csv, validation_runs.csv, "
+               "validation_measured.csv\n";
 }
 
 }  // namespace mpmcut::validation
