@@ -25,9 +25,9 @@ void say(const char* text) {
   [[maybe_unused]] const ssize_t n = ::write(STDERR_FILENO, text, std::strlen(text));
 }
 
-extern "C" void on_stop_signal(int) {
+extern "C" void on_stop_signal(int signal_number) {
   if (!g_repeats.is_new_stop()) return;  // the same stop, delivered twice
-  if (g_stop.request_stop()) return;  // the run loop stops after this step
+  if (g_stop.request_stop(signal_number)) return;  // the run loop stops after this step
   for (auto& child : g_children) {
     const pid_t target = child.load();
     if (target != 0) ::kill(target, SIGTERM);

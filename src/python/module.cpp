@@ -1,6 +1,7 @@
 // The Python module mpmcut's compiled part, mpmcut._mpmcut (docs/python.md): a case (Case) and a
 // run (run/case_run.hpp) as Python objects. src/python/mpmcut/__init__.py adds the Python-side
 // conveniences (overrides from a dict). A thin layer: the run is the library's, step for step.
+#include <csignal>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -44,6 +45,12 @@ RunOptions run_options(const fs::path& out, bool force, int threads, bool progre
   o.progress = progress;
   o.checkpoint_every = parse_checkpoint_interval(checkpoint_every);
   return o;
+}
+
+// The exception's "Type: message" without the traceback pybind11 appends.
+std::string first_line(std::string text) {
+  if (const auto end = text.find('\n'); end != std::string::npos) text.resize(end);
+  return text;
 }
 
 // A run driven from Python. The StopToken is the run's own: stop() and Ctrl-C request a clean stop.
@@ -90,13 +97,14 @@ class PyRun {
         py::object keep_going;
         try {
           keep_going = (*callback)(self);
-        } catch (py::error_already_set&) {  // the callback failed (or Ctrl-C in it): stop cleanly, then raise
-          run_->stop_token().request_stop();
+        } catch (py::error_already_set& e) {  // the callback failed (or Ctrl-C in it): stop cleanly, then raise
+          if (e.matches(PyExc_KeyboardInterrupt)) run_->stop_token().request_stop(SIGINT);
+          else run_->request_stop("the callback raised " + first_line(e.what()));
           ended_ = true;
           finish();
           throw;
         }
-        if (!keep_going.is_none() && !keep_going.cast<bool>()) run_->stop_token().request_stop();
+        if (!keep_going.is_none() && !keep_going.cast<bool>()) run_->request_stop("the callback returned False");
       }
     }
     return finish();
@@ -123,7 +131,7 @@ class PyRun {
     return run_->final_status();
   }
 
-  void stop() { run_->stop_token().request_stop(); }
+  void stop() { run_->request_stop("Run.stop()"); }
   fs::path checkpoint() {
     refuse_while_stepping("checkpoint");
     // A checkpoint after the final outputs would be newer than the summary it contradicts: resume would continue
@@ -182,7 +190,7 @@ class PyRun {
   void interrupted_by_python() {
     PyObject *type, *value, *trace;
     PyErr_Fetch(&type, &value, &trace);
-    run_->stop_token().request_stop();
+    run_->stop_token().request_stop(SIGINT);
     ended_ = true;
     finish();
     PyErr_Restore(type, value, trace);

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <csignal>
 #include <iostream>
 
 #include <fmt/format.h>
@@ -100,7 +101,7 @@ void CaseRun::begin() {
 bool CaseRun::advance() {
   begin();
   if (ended_ || finished()) return false;
-  if (stop_->stop_requested()) return stopped(kStopRequested);  // asked between steps
+  if (stop_->stop_requested()) return stopped(stop_description());  // asked between steps
   const Scene& scene = sim_.scene();
   try {
     RunOutputs& out = *out_;
@@ -133,7 +134,7 @@ bool CaseRun::advance() {
         while (next_snapshot_ <= sim_.time() + eps) next_snapshot_ += snap_dt > 0 ? snap_dt : end;
       }
       if (options_.progress) progress_->update(sim_.time(), sim_.step_count(), sim_.last_dt());
-      if (stop_->stop_requested()) return stopped(kStopRequested);
+      if (stop_->stop_requested()) return stopped(stop_description());
       if (checkpoint_due()) write_checkpoint();
     } catch (const SimulationError& e) {
       status_ = run_status::failed;
@@ -153,6 +154,15 @@ bool CaseRun::advance() {
     return false;
   }
   return !finished();
+}
+
+std::string CaseRun::stop_description() const {
+  if (!stop_reason_.empty()) return fmt::format("stopped on request: {}", stop_reason_);
+  switch (stop_->signal_number()) {
+    case SIGINT: return "stopped on request: SIGINT (Ctrl-C)";
+    case SIGTERM: return "stopped on request: SIGTERM";
+    default: return std::string(kStopRequested);
+  }
 }
 
 bool CaseRun::stopped(std::string_view how) {
@@ -177,7 +187,8 @@ void CaseRun::output_failed(const std::exception& e) {
 int CaseRun::finish() {
   begin();
   // Finished early by a library caller: after a stop request (Ctrl-C in Python, Run.stop()) it reads as the CLI's.
-  if (exit_code_ == kExitComplete && !finished()) stopped(stop_->stop_requested() ? kStopRequested : kEndedByCaller);
+  if (exit_code_ == kExitComplete && !finished())
+    stopped(stop_->stop_requested() ? stop_description() : std::string(kEndedByCaller));
   const SolverSpec& solver = sim_.scene().solver;
   if (exit_code_ == kExitComplete && sim_.time() < solver.end_time - 1e-12 * solver.end_time)  // ended by max_steps
     message_ = fmt::format("ended at solver.max_steps = {} at t = {:.6g} s, before solver.end_time = {:.6g} s: the "

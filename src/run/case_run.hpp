@@ -62,6 +62,12 @@ class CaseRun {
   const std::filesystem::path& root() const { return root_; }
   int threads() const { return threads_; }
   StopToken& stop_token() { return *stop_; }
+  // Asks the run to stop after its current step and says why in the summary ("stopped on request: <why> at step
+  // ..."): the program driving the run knows the cause (a Python callback's exception), the token does not.
+  void request_stop(std::string why) {
+    stop_reason_ = std::move(why);
+    stop_->request_stop();
+  }
   void flush_outputs() { out_->flush(); }
   // The summary as it would be written now (status "running" while the run goes on).
   RunSummary summary() const;
@@ -76,6 +82,7 @@ class CaseRun {
   bool checkpoint_due() const;
   void output_failed(const std::exception& e);  // an output error ends the run
   bool stopped(std::string_view how);  // a stop ends the run (`how`: what stopped it, for the message); false
+  std::string stop_description() const;  // what the stop request was, for the message
   void begin();  // the console line and the progress display, before the first step
   void cut_back_outputs(const RunLoopState& loop) const;
   std::vector<FileLength> csv_lengths() const;
@@ -85,6 +92,7 @@ class CaseRun {
   int threads_;
   StopToken own_stop_;  // when the options bring none
   StopToken* stop_;
+  std::string stop_reason_;  // request_stop's why, empty for a plain request
   std::optional<ThreadTuner> tuner_;  // picks 1..threads_ by timing (busy machines); none = fixed
   Simulation sim_;
   std::optional<CuttingParameters> cutting_;  // the process of a cut (its outputs read it)

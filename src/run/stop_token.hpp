@@ -13,11 +13,15 @@ class StopToken {
   // Records a request. Returns true when a run loop is running and this is the first request
   // since it began, i.e. the loop will stop cleanly after this step; false otherwise (no loop, or
   // the loop has already been asked), where a signal handler exits at once instead.
-  bool request_stop() noexcept {
+  // `signal_number`: the signal that asks (SIGINT, SIGTERM), 0 for a request of the driving program.
+  bool request_stop(int signal_number = 0) noexcept {
+    if (signal_number != 0) signal_.store(signal_number);
     const int n = requests_.fetch_add(1) + 1;
     return running_.load() && n == 1;
   }
   bool stop_requested() const noexcept { return requests_.load() > 0; }
+  // The signal of the request, 0 when none came by a signal.
+  int signal_number() const noexcept { return signal_.load(); }
 
   // The span of one run loop: requests made before it began are forgotten (the command line has
   // already exited on them), and requests during it stop it cleanly.
@@ -25,6 +29,7 @@ class StopToken {
    public:
     explicit LoopScope(StopToken& token) : token_(token) {
       token_.requests_ = 0;
+      token_.signal_ = 0;
       token_.running_ = true;
     }
     ~LoopScope() { token_.running_ = false; }
@@ -37,6 +42,7 @@ class StopToken {
 
  private:
   std::atomic<int> requests_{0};
+  std::atomic<int> signal_{0};
   std::atomic<bool> running_{false};
 };
 

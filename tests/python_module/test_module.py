@@ -114,6 +114,20 @@ def test_particle_field_units_cover_every_field():
     assert units["mass"] == "kg_per_m" and units["plastic_strain"] == "" and units["body"] == "id"
 
 
+def test_an_exception_in_the_callback_stops_the_run_and_its_summary_names_it(tmp_path):
+    def boom(run):
+        if run.step_count >= 2:
+            raise ValueError("boom")
+
+    run = mpmcut.Run(mpmcut.case_from_toml(ELASTIC), tmp_path / "r", threads=1)
+    with pytest.raises(ValueError, match="boom"):
+        run.run(boom)
+    assert run.status == "interrupted"
+    # It said "stopped on request (a stop signal, or a stop asked by the program driving the run)".
+    assert run.summary()["message"].startswith("stopped on request: the callback raised ValueError: boom at step 2"), \
+        run.summary()["message"]
+
+
 def test_a_second_run_into_a_directory_in_use_is_refused_until_the_first_finishes(tmp_path):
     # A second Run with force=True used to wipe the directory while the first still wrote into it.
     case = mpmcut.case_from_toml(ELASTIC)
@@ -160,8 +174,8 @@ def test_stop_checkpoint_and_resume_continue_the_same_run(tmp_path, quick_case, 
     stopped = mpmcut.run_case(case, tmp_path / "stopped", threads=1, callback=stop_at_60)
     assert stopped.status == "interrupted" and stopped.exit_code == 130
     assert stopped.summary()["last_checkpoint"].startswith("checkpoints/")
-    # Stopped by the caller, not necessarily by a signal: the message does not claim one.
-    assert stopped.summary()["message"].startswith("stopped on request (a stop signal, or a stop asked by the program")
+    # Stopped by the caller, not by a signal: the message says which (it said "a stop signal, or ...").
+    assert stopped.summary()["message"].startswith("stopped on request: the callback returned False at step 60")
     resumed = mpmcut.Run.resume(tmp_path / "stopped", threads=1)
     assert resumed.step_count == 60
     assert resumed.run() == "complete"
@@ -177,7 +191,7 @@ def test_stop_checkpoint_and_resume_continue_the_same_run(tmp_path, quick_case, 
     early.step(10)
     assert early.finish() == "interrupted"
     assert early.summary()["message"].startswith("ended by the caller before the end time at step 10")
-    assert run.summary()["message"].startswith("stopped on request")
+    assert run.summary()["message"].startswith("stopped on request: Run.stop() at step 20")
     # A finished run takes no checkpoint: it would be newer than the summary it contradicts.
     for finished in (run, resumed):
         with pytest.raises(RuntimeError, match="the run has finished"):
@@ -249,7 +263,7 @@ def test_ctrl_c_stops_cleanly_then_raises(tmp_path, quick_case, where):
         run.run(interrupt_in_callback if where == "callback" else interrupt_from_outside)
     assert run.status == "interrupted" and run.exit_code == 130
     # As the CLI's SIGINT says it (it read "ended by the caller", the words of an early finish()).
-    assert run.summary()["message"].startswith("stopped on request"), run.summary()["message"]
+    assert run.summary()["message"].startswith("stopped on request: SIGINT (Ctrl-C)"), run.summary()["message"]
     assert 20 <= run.step_count < 17566  # stopped long before the end
     assert run.summary()["last_checkpoint"].startswith("checkpoints/")
     resumed = mpmcut.Run.resume(run.out, threads=1)

@@ -145,6 +145,7 @@ TEST_F(LongRuns, SigintCheckpointsAndResumeIsBitIdentical) {
   // The interruption checkpoint is at the step where the run stopped, not at a multiple of 100.
   const std::string summary = read_file(out("interrupted") / "summary.json");
   EXPECT_NE(summary.find("last_checkpoint"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("stopped on request: SIGINT (Ctrl-C) at step"), std::string::npos) << summary;
   const CliResult r = resume("interrupted");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(summary_status(out("interrupted")), "complete");
