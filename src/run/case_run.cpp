@@ -157,12 +157,13 @@ bool CaseRun::advance() {
 }
 
 std::string CaseRun::stop_description() const {
-  if (!stop_reason_.empty()) return fmt::format("stopped on request: {}", stop_reason_);
+  // A signal first: a request_stop(why) may be older (a loop that began since forgot it).
   switch (stop_->signal_number()) {
     case SIGINT: return "stopped on request: SIGINT (Ctrl-C)";
     case SIGTERM: return "stopped on request: SIGTERM";
-    default: return std::string(kStopRequested);
+    default: break;
   }
+  return stop_reason_.empty() ? std::string(kStopRequested) : fmt::format("stopped on request: {}", stop_reason_);
 }
 
 bool CaseRun::stopped(std::string_view how) {
