@@ -597,10 +597,9 @@ CaseTree parse_case_tree(std::string_view toml_text, const std::string& source_n
 
 std::string read_case_text(const std::filesystem::path& file) {
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(file, ec))
-    throw InputError(fmt::format("{}: cannot read case file: {}", file.string(),
-                                 std::filesystem::exists(file, ec) ? "not a regular file" : "no such file"));
-  std::optional<std::string> text = read_whole_file(file);
+  // Not opened unless a regular file (a directory opens on Linux and reads as nothing).
+  std::optional<std::string> text =
+      std::filesystem::is_regular_file(file, ec) ? read_whole_file(file) : std::optional<std::string>();
   if (!text) throw InputError(fmt::format("{}: cannot read case file: {}", file.string(), unreadable_reason(file)));
   return std::move(*text);
 }
