@@ -16,8 +16,9 @@
 // area. That case is the DISABLED_ test below, which fails today (issue 11, item 3: the damage dissipation of a
 // cut stands for 0.8-2 times its real new surface, and primary and segment bands run at 30-50 deg to the grid).
 // Part of the excess is tension stored before initiation, which a failure strain that falls with triaxiality removes
-// (second DISABLED_ test: 2.46 and 2.55); the rest is the zone's width. A direction-dependent length and a second
-// velocity field across failed particles were tried and do not remove it (docs/theory_materials.md §10).
+// (second DISABLED_ test: 2.46 and 2.55); the rest is the zone's width. A direction-dependent length, a second
+// velocity field across failed particles and a softening strain averaged over a band three cells wide (nonlocal)
+// were tried and do not remove it: the width is kinematic (docs/theory_materials.md §10).
 #include <gtest/gtest.h>
 
 #include <algorithm>
