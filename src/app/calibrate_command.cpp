@@ -8,6 +8,7 @@
 
 #include "app/plot_command.hpp"
 #include "app/path_option.hpp"
+#include "app/progress_option.hpp"
 #include "io/input_error.hpp"
 #include "run/run_options.hpp"
 #include "studies/calibration.hpp"
@@ -23,6 +24,7 @@ struct CalibrateOptions {
   std::string config_file;
   std::string out_dir;
   int jobs = 0;
+  double progress_interval_s = kDefaultProgressIntervalS;
   bool force = false;
   bool no_plots = false;
 };
@@ -48,7 +50,7 @@ int calibrate(const CalibrateOptions& o) {
     if (o.force) fs::remove_all(out);
     const int jobs = o.jobs > 0 ? o.jobs
                                 : std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / config.threads);
-    const int code = run_calibration(config, out, jobs);
+    const int code = run_calibration(config, out, jobs, o.progress_interval_s);
     if (code == 130) return code;
     if (!o.no_plots) {
       std::string why;
@@ -78,6 +80,7 @@ void add_calibrate_command(CLI::App& app) {
       ->check(non_empty_path());
   cmd->add_option("-j,--jobs", o->jobs, "Runs at the same time (default: cores / threads of each run)")
       ->check(CLI::Range(1, 1024));
+  add_progress_option(cmd, o->progress_interval_s);
   cmd->add_flag("-f,--force", o->force, "Delete the result directory first (no resume)");
   cmd->add_flag("--no-plots", o->no_plots, "Only the tables");
   cmd->callback([o]() {

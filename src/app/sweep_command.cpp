@@ -17,6 +17,7 @@
 #include "app/plot_command.hpp"
 #include "app/stop_signal.hpp"
 #include "app/path_option.hpp"
+#include "app/progress_option.hpp"
 #include "run/run_case.hpp"
 #include "studies/grid_convergence_report.hpp"
 #include "studies/task_farm.hpp"
@@ -45,6 +46,7 @@ struct SweepOptions {
   std::vector<double> feeds_m;
   std::vector<int> cells_per_feed;  // empty: the case's own cell size
   int jobs = 0;
+  double progress_interval_s = kDefaultProgressIntervalS;
   int threads = 1;
   std::string out_dir;
   std::vector<std::string> overrides;
@@ -264,7 +266,7 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
                            concurrency_text(jobs),
                            o.threads, out.string())
             << std::flush;
-  const bool completed = run_cases(runs, jobs, true);
+  const bool completed = run_cases(runs, jobs, true, o.progress_interval_s);
   // Whether the plots will be drawn, known before sweep.md says which there are.
   std::string no_plotting;
   const bool plotting = !o.no_plots && completed && python_plotting_available(false, no_plotting);
@@ -355,8 +357,11 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
     s << fmt::format("{} cases, {} complete, {} not complete. Forces are means per unit width of cut over the "
                      "steady window of each run (column \"force window\"; where a run ended before its steady "
                      "window, the mean raw force over the last half of the cut). Chip columns come from the chip "
-                     "analysis in summary.json and are blank where it did not provide them.\n\n",
-                     cases.size(), cases.size() - failed, failed);
+                     "analysis in summary.json and are blank where it did not provide them.{}\n\n",
+                     cases.size(), cases.size() - failed, failed,
+                     failed > 0 ? " The forces of a case that did not complete are blank (its forces.csv holds "
+                                  "the cut so far)."
+                                : "");
     s << table.markdown() << "\n";
     if (resolutions.size() > 1) {
       // Grid convergence: per condition, the change between the two finest complete resolutions.
@@ -479,6 +484,7 @@ void add_sweep_command(CLI::App& app) {
                     "cutting.rake_angle_deg=-5,0,10 or cutting.edge_radius=5e-6,20e-6 or cutting.friction=0.2,0.5; "
                     "repeatable (every combination of the keys' values is a case); every value is checked before "
                     "anything runs (docs/results.md)");
+  add_progress_option(sweep, o->progress_interval_s);
   sweep->add_flag("--no-plots", o->no_plots, "Only the tables");
   sweep->callback([o, &app]() {
     int code = 0;

@@ -11,6 +11,7 @@
 #include "app/validation_conditions.hpp"
 #include "app/validation_report.hpp"
 #include "app/path_option.hpp"
+#include "app/progress_option.hpp"
 #include "cutting/input_plausibility.hpp"
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
@@ -183,7 +184,7 @@ int run_validation(const ValidateOptions& o) {
       for (const std::string& w : input_plausibility_warnings(*first.cutting, first.scene))
         std::cerr << "warning: every run: " << w << "\n";
   }
-  const bool completed = run_cases(runs, jobs, true);
+  const bool completed = run_cases(runs, jobs, true, o.progress_interval_s);
   for (std::size_t i = 0; i < runs.size(); ++i) {
     run_of[i]->result = read_case_result(out / run_of[i]->id, runs[i].log_file, runs[i].exit_code);
     run_of[i]->origin = "this run";
@@ -276,6 +277,7 @@ void add_validate_command(CLI::App& app) {
       ->check(non_empty_path());
   v->add_option("-j,--jobs", o->jobs, "Runs at the same time (default: cores / threads)")->check(CLI::Range(1, 1024));
   v->add_option("-t,--threads", o->threads, "OpenMP threads of each run (default: 1)")->check(CLI::Range(1, kMaxThreads));
+  add_progress_option(v, o->progress_interval_s);
   v->add_flag("--no-plots", o->no_plots, "Only the tables");
   v->add_option("--material", o->material,
                 "Material set to run: a set of the library (default ti64-cutting; docs/materials.md) or of "

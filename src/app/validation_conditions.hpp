@@ -12,6 +12,7 @@
 #include "studies/case_runs.hpp"
 #include "studies/chip_observations.hpp"
 #include "studies/measured_conditions.hpp"
+#include "studies/progress_interval.hpp"
 
 namespace mpmcut::validation {
 
@@ -24,6 +25,7 @@ struct Options {
   std::string out_dir;
   std::string records_dir;  // --records: complete runs kept as small committed files (studies/run_records.hpp)
   int jobs = 0;
+  double progress_interval_s = kDefaultProgressIntervalS;  // --progress-every (0: off)
   int threads = 1;
   bool no_plots = false;
   bool list = false;

@@ -3,7 +3,6 @@
 #include <cctype>
 #include <cmath>
 #include <fstream>
-#include <limits>
 #include <optional>
 #include <sstream>
 
@@ -399,10 +398,9 @@ BodySpec read_body(TableReader t, const Scene& scene) {
   // A shape thinner than the particle spacing holds none of the sub-grid's points: the body would vanish silently.
   // (Beyond kMaxSeedPointsScanned in its box the search is left out: such a shape is no sliver, and the memory
   // check decides whether it runs at all.)
-  const Vec2 everywhere = Vec2::Constant(std::numeric_limits<double>::infinity());
-  bool seeded = seed_points_in_box(b, scene.grid.cell_size, -everywhere, everywhere) > kMaxSeedPointsScanned;
+  bool seeded = seed_points_in_box(b, scene.grid.cell_size) > kMaxSeedPointsScanned;
   if (!seeded)
-    for_each_seed_point(b, scene.grid.min, scene.grid.cell_size, -everywhere, everywhere, [&](const Vec2&) {
+    for_each_seed_point(b, scene.grid.min, scene.grid.cell_size, [&](const Vec2&) {
       seeded = true;
       return false;
     });

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "io/input_error.hpp"
+#include "run/wall_time_units.hpp"
 
 namespace mpmcut {
 
@@ -37,11 +38,8 @@ CheckpointInterval parse_checkpoint_interval(std::string_view text) {
     if (value != std::floor(value)) throw bad("a step count must be a whole number");
     return {CheckpointInterval::Kind::Steps, value};
   }
-  if (unit == "s" || unit == "sec" || unit == "secs" || unit == "second" || unit == "seconds")
-    return {CheckpointInterval::Kind::WallSeconds, value};
-  if (unit == "min" || unit == "mins" || unit == "minute" || unit == "minutes" || unit == "m")
-    return {CheckpointInterval::Kind::WallSeconds, 60.0 * value};
-  if (unit == "h" || unit == "hour" || unit == "hours") return {CheckpointInterval::Kind::WallSeconds, 3600.0 * value};
+  if (const auto seconds = seconds_per_wall_time_unit(unit))
+    return {CheckpointInterval::Kind::WallSeconds, *seconds * value};
   throw bad(fmt::format("unknown unit '{}'", unit));
 }
 

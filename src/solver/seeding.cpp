@@ -1,7 +1,6 @@
 #include "solver/seeding.hpp"
 
 #include <cmath>
-#include <limits>
 #include <stdexcept>
 
 namespace mpmcut {
@@ -13,8 +12,7 @@ void seed_particles(const Scene& scene, const Grid& grid, Particles& particles) 
     if (mat < 0) throw std::invalid_argument("body '" + body.name + "' uses unknown material '" + body.material + "'");
     const double d = grid.h / body.particles_per_cell;
     const double rho = scene.materials[mat].density;
-    const Vec2 everywhere = Vec2::Constant(std::numeric_limits<double>::infinity());
-    for_each_seed_point(body, grid.domain_min, grid.h, -everywhere, everywhere, [&](const Vec2& x) {
+    for_each_seed_point(body, grid.domain_min, grid.h, [&](const Vec2& x) {
       particles.add(x, body.velocity, rho * d * d, d * d, body.temperature, static_cast<int>(b), mat);
       return true;
     });

@@ -1,6 +1,7 @@
 #pragma once
 // The particles a scene starts with.
 #include <cmath>
+#include <limits>
 
 #include "core/grid.hpp"
 #include "core/particles.hpp"
@@ -22,9 +23,21 @@ template <class Visit>
 void for_each_seed_point(const BodySpec& body, const Vec2& domain_min, double cell_size, const Vec2& lo,
                          const Vec2& hi, Visit visit, long stride = 1);
 
+// The same over the whole body.
+template <class Visit>
+void for_each_seed_point(const BodySpec& body, const Vec2& domain_min, double cell_size, Visit visit) {
+  const Vec2 everywhere = Vec2::Constant(std::numeric_limits<double>::infinity());
+  for_each_seed_point(body, domain_min, cell_size, -everywhere, everywhere, visit);
+}
+
 // How many sub-grid points of `body` its bounding box, cut to [lo, hi], spans (what for_each_seed_point visits
 // at stride 1, at most): a check can bound its cost before it starts.
 double seed_points_in_box(const BodySpec& body, double cell_size, const Vec2& lo, const Vec2& hi);
+// The same over the whole body's bounding box.
+inline double seed_points_in_box(const BodySpec& body, double cell_size) {
+  const Vec2 everywhere = Vec2::Constant(std::numeric_limits<double>::infinity());
+  return seed_points_in_box(body, cell_size, -everywhere, everywhere);
+}
 
 template <class Visit>
 void for_each_seed_point(const BodySpec& body, const Vec2& domain_min, double cell_size, const Vec2& lo,

@@ -135,7 +135,8 @@ namespace {
 
 class Calibrator {
  public:
-  Calibrator(const CalibrationConfig& c, fs::path out, int jobs) : c_(c), out_(std::move(out)), jobs_(jobs) {}
+  Calibrator(const CalibrationConfig& c, fs::path out, int jobs, double progress_interval_s)
+      : c_(c), out_(std::move(out)), jobs_(jobs), progress_interval_s_(progress_interval_s) {}
 
   int run();
 
@@ -165,6 +166,7 @@ class Calibrator {
   const CalibrationConfig& c_;
   fs::path out_;
   int jobs_;
+  double progress_interval_s_;  // 0: no periodic progress lines
   std::map<std::string, Evaluation> cache_;
   std::vector<std::pair<std::string, std::string>> sequence_;  // (stage, key) of every evaluation, in order
   std::string stage_;
@@ -210,7 +212,7 @@ std::vector<ConditionResult> Calibrator::run_conditions(const std::vector<Measur
     r.log_file = dir / "logs" / (cc.id + ".log");
     runs.push_back(r);
   }
-  completed = run_cases(runs, jobs_, true);
+  completed = run_cases(runs, jobs_, true, progress_interval_s_);
   // The chip thickness comes from the chip analysis of the last snapshot.
   if (completed && c_.weight_chip_thickness > 0) {
     std::vector<ChildRun> analyses;
@@ -637,7 +639,7 @@ std::string read_text(const fs::path& file) { return read_whole_file(file).value
 
 }  // namespace
 
-int run_calibration(const CalibrationConfig& config, const fs::path& out, int jobs) {
+int run_calibration(const CalibrationConfig& config, const fs::path& out, int jobs, double progress_interval_s) {
   // A directory holds one calibration: resuming with a changed configuration would replay a cache that
   // belongs to another problem.
   const std::string text = read_text(config.file);
@@ -676,7 +678,7 @@ int run_calibration(const CalibrationConfig& config, const fs::path& out, int jo
   fs::create_directories(out);
   write_file_atomically(copy, [&](std::ostream& s) { s << text; });
   write_file_atomically(rows, [&](std::ostream& s) { s << rows_text; });
-  return Calibrator(config, out, jobs).run();
+  return Calibrator(config, out, jobs, progress_interval_s).run();
 }
 
 }  // namespace mpmcut

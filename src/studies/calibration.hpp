@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "studies/measured_conditions.hpp"
+#include "studies/progress_interval.hpp"
 
 namespace mpmcut {
 
@@ -70,7 +71,9 @@ ConditionRunSettings condition_run_settings(const CalibrationConfig& config, con
 
 // Runs (or resumes) the calibration into `out`: evaluations.csv, best_material.toml, calibration.md,
 // calibration_best.csv, cache.jsonl, evaluations/. Returns 0, 1 (the best set's held-back runs failed),
-// or 130 (interrupted: run the same command again to resume).
-int run_calibration(const CalibrationConfig& config, const std::filesystem::path& out, int jobs);
+// or 130 (interrupted: run the same command again to resume). progress_interval_s: how often a line on the running
+// runs' progress is printed (0: only as each run ends).
+int run_calibration(const CalibrationConfig& config, const std::filesystem::path& out, int jobs,
+                    double progress_interval_s = kDefaultProgressIntervalS);
 
 }  // namespace mpmcut

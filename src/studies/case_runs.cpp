@@ -157,13 +157,9 @@ std::string csv_cell(const std::string& s) {
   return q + "\"";
 }
 
-// A line on how far the running cases have got, this often: long enough not to flood the console of a sweep of
-// one-minute cases (which report as they end), short enough that an hour-long case is not silent.
-constexpr double kProgressReportIntervalS = 600.0;
-
 }  // namespace
 
-bool run_children(std::vector<ChildRun>& runs, int jobs, bool print_progress) {
+bool run_children(std::vector<ChildRun>& runs, int jobs, bool print_progress, double progress_interval_s) {
   g_stop_signals = 0;
   g_repeats.reset();
   struct sigaction action {}, old_int{}, old_term{};
@@ -237,8 +233,8 @@ bool run_children(std::vector<ChildRun>& runs, int jobs, bool print_progress) {
           if (const auto f = run_fraction_done(result_dir_of_args(runs[info.first].args)))
             first_seen.emplace(pid, std::pair{study_s, *f});
     }
-    if (print_progress && !running.empty() &&
-        std::chrono::duration<double>(now - last_report).count() >= kProgressReportIntervalS) {
+    if (print_progress && progress_interval_s > 0.0 && !running.empty() &&
+        std::chrono::duration<double>(now - last_report).count() >= progress_interval_s) {
       last_report = now;
       const double study_s = std::chrono::duration<double>(now - study_start).count();
       std::vector<RunningCase> cases;
@@ -302,9 +298,14 @@ CaseResult read_case_result(const fs::path& dir, const fs::path& log_file, int e
   r.source_revision = s.source_revision.empty() ? "unrecorded" : s.source_revision;
   if (r.status != "complete" && r.message.empty()) r.message = last_lines(log_file, 2);
 
-  r.cutting_force_N_per_mm = s.mean_cutting_force_N_per_mm;
-  r.thrust_force_N_per_mm = s.mean_thrust_force_N_per_mm;
-  if (r.cutting_force_N_per_mm && r.thrust_force_N_per_mm) {
+  // A run that did not complete (interrupted, failed) has cut only part of its length: its mean forces would sit in
+  // the study's table beside the complete ones as if they were results.
+  if (r.status != "complete") {
+    r.message += fmt::format("{}forces left out: the run did not complete (its forces.csv holds the cut so far)",
+                             r.message.empty() ? "" : "; ");
+  } else if (s.mean_cutting_force_N_per_mm && s.mean_thrust_force_N_per_mm) {
+    r.cutting_force_N_per_mm = s.mean_cutting_force_N_per_mm;
+    r.thrust_force_N_per_mm = s.mean_thrust_force_N_per_mm;
     r.force_basis = "steady window";
     r.cutting_force_drift_percent = steady_drift_percent(s, "cutting");
     r.thrust_force_drift_percent = steady_drift_percent(s, "thrust");

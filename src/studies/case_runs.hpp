@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "run/run_summary.hpp"
+#include "studies/progress_interval.hpp"
 
 namespace mpmcut {
 
@@ -34,7 +35,8 @@ std::string finished_case_text(const ChildRun& run);
 // program the study was started as, even if its file is replaced (rebuilt) while the study runs.
 // SIGINT/SIGTERM to this process are passed on once to the running children (which checkpoint and stop);
 // a second one kills them. Returns false if interrupted (children not started keep exit_code -1).
-bool run_children(std::vector<ChildRun>& runs, int jobs, bool print_progress);
+bool run_children(std::vector<ChildRun>& runs, int jobs, bool print_progress,
+                  double progress_interval_s = kDefaultProgressIntervalS);
 
 // The headline results of one run directory, as far as summary.json (and forces.csv) give them.
 struct CaseResult {
@@ -66,7 +68,8 @@ struct CaseResult {
 
 // Reads summary.json of `dir` (and forces.csv for the fallback mean: when the run ended before its steady
 // window, the mean of the raw forces over the last half of the tool travel). `log_file` and `exit_code`
-// explain a missing or failed summary.
+// explain a missing or failed summary. A run that did not complete gets no forces (a partial cut's means
+// would read as results); its message says so.
 CaseResult read_case_result(const std::filesystem::path& dir, const std::filesystem::path& log_file, int exit_code);
 
 // A table of text cells written as CSV (cells with commas or quotes quoted) and as Markdown.

@@ -198,9 +198,9 @@ int run_study(const std::function<int()>& body) {
   return code;
 }
 
-bool run_cases(std::vector<ChildRun>& runs, int jobs, bool print_progress) {
+bool run_cases(std::vector<ChildRun>& runs, int jobs, bool print_progress, double progress_interval_s) {
   if (g_farm.active && g_farm.rank == 0) return farm_out(runs, print_progress);
-  return run_children(runs, jobs, print_progress);
+  return run_children(runs, jobs, print_progress, progress_interval_s);
 }
 
 }  // namespace mpmcut

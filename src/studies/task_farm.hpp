@@ -31,7 +31,8 @@ int run_study(const std::function<int()>& body);
 
 // Runs the cases of a study: on the farm's worker ranks inside run_study under MPI, else locally (at most
 // `jobs` processes at a time, run_children). Returns false if interrupted (SIGINT/SIGTERM).
-bool run_cases(std::vector<ChildRun>& runs, int jobs, bool print_progress);
+bool run_cases(std::vector<ChildRun>& runs, int jobs, bool print_progress,
+               double progress_interval_s = kDefaultProgressIntervalS);
 
 // "at most N at a time" (local) or "on M MPI ranks" (farm), for a study's opening line.
 std::string concurrency_text(int jobs);

@@ -1,7 +1,8 @@
 """End to end: `mpmcut sweep` over two cutting speeds on a tiny, coarse cut, then `mpmcut plot` on one case.
 
 usage: /usr/bin/python3 test_plots_sweep.py MPMCUT_BINARY SCRATCH_DIR
-Checks: the sweep exits 0; sweep.csv has one row per case, each complete with finite forces; sweep.md exists;
+Checks: the sweep exits 0 and prints the running cases' progress at --progress-every; a bad --progress-every exits 2
+before anything is made; sweep.csv has one row per case, each complete with finite forces; sweep.md exists;
 the chip galleries are drawn; every run drew its own pictures and analysed its chip over the steady window
 (summary.json chip_over_time, its Gs statistics in sweep.csv);
 forces_vs_speed.png, chip_vs_speed.png and chip_map.png are non-trivial PNGs; `mpmcut plot` writes forces.png and
@@ -42,11 +43,20 @@ def main(binary, scratch):
     out = os.path.join(scratch, "sweep")
     t0 = time.time()
     # No --feeds: the case's own uncut chip thickness (0.1 mm) is the feed.
-    p = subprocess.run([binary, "sweep", case, "--speeds", "20,50", "--jobs", "2", "--out", out],
-                       capture_output=True, text=True, timeout=300)
+    # --progress-every 0.2s: the one-second cases get the progress line of the running cases (default: 10 min).
+    p = subprocess.run([binary, "sweep", case, "--speeds", "20,50", "--jobs", "2", "--out", out,
+                        "--progress-every", "0.2s"], capture_output=True, text=True, timeout=300)
     print(p.stdout, p.stderr, sep="\n")
     if p.returncode != 0:
         fail(f"sweep exit status {p.returncode}")
+    if "running: v" not in p.stdout:
+        fail("--progress-every 0.2s: no progress line of the running cases")
+    bad = subprocess.run([binary, "sweep", case, "--speeds", "20", "--out", os.path.join(scratch, "bad"),
+                          "--progress-every", "5x"], capture_output=True, text=True, timeout=60)
+    if bad.returncode != 2 or "--progress-every: '5x': unknown unit 'x'" not in bad.stderr:
+        fail(f"--progress-every 5x: exit {bad.returncode}, {bad.stderr}")
+    if os.path.exists(os.path.join(scratch, "bad")):
+        fail("--progress-every 5x made its result directory")
     print(f"sweep took {time.time() - t0:.1f} s")
     with open(os.path.join(out, "sweep.csv"), newline="") as f:
         rows = list(csv.DictReader(f))

@@ -8,7 +8,9 @@
 #include <unistd.h>
 
 #include "run/run_summary.hpp"
+#include "io/input_error.hpp"
 #include "studies/case_runs.hpp"
+#include "studies/progress_interval.hpp"
 #include "studies/study_progress.hpp"
 
 namespace mpmcut {
@@ -74,6 +76,25 @@ TEST(StudyProgress, ACaseStoppedAfterItsLastStepIsReportedComplete) {
   EXPECT_EQ(finished_case_text(run), "complete");
   run.exit_code = 1;
   EXPECT_EQ(finished_case_text(run), "failed (exit status 1)");
+}
+
+// --progress-every: wall times in the units --checkpoint-every takes, a bare number in seconds, off.
+TEST(StudyProgress, IntervalTakesWallTimesAndOff) {
+  EXPECT_EQ(parse_progress_interval("30s"), 30.0);
+  EXPECT_EQ(parse_progress_interval("0.5 min"), 30.0);
+  EXPECT_EQ(parse_progress_interval("2h"), 7200.0);
+  EXPECT_EQ(parse_progress_interval("45"), 45.0);
+  EXPECT_EQ(parse_progress_interval("off"), 0.0);
+  EXPECT_EQ(parse_progress_interval("0"), 0.0);
+  for (const char* bad : {"", "-5s", "5x", "abc", "inf", "5 steps"}) {
+    try {
+      parse_progress_interval(bad);
+      ADD_FAILURE() << "accepted '" << bad << "'";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(std::string("'") + bad + "'"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("30s, 5min, 1h"), std::string::npos) << e.what();
+    }
+  }
 }
 
 }  // namespace
