@@ -245,6 +245,24 @@ TEST(SceneValidation, BodiesThatOverlapAtTheStartAreAnError) {
   expect_error(with_wall("0.41") + "rounding_radius = 0.04\n", "polygon = [[0.41", {"overlaps body \"b\""});
 }
 
+// Penalty springs act where a particle's domain reaches into a rigid body: a particle closer to the outline than its
+// domain's half width (here 0.025 m) at the start would be shot out at the first step (a block laid on a plate turned
+// against the grid flew off it). Node contact takes such a start; penalty contact wants the gap.
+TEST(SceneValidation, PenaltyContactRefusesDomainsReachingIntoARigidBodyAtTheStart) {
+  const std::string wall = "[[rigid_body]]\nname = \"wall\"\npolygon = [[{}, 0.0], [0.9, 0.0], [0.9, 1.0], [{}, 1.0]]\n";
+  const auto with_wall = [&](const char* x, bool penalty) {
+    const std::string base = penalty ? edit("end_time = 1.0", "end_time = 1.0\ncontact_detection = \"penalty\"") : kBase;
+    return base + fmt::format(fmt::runtime(wall), x, x);
+  };
+  EXPECT_EQ(error_of(with_wall("0.39", false)), "");  // the last particles at 0.375: 0.015 m from the wall
+  expect_error(with_wall("0.39", true), "polygon = [[0.39",
+               {"key 'rigid_body[0].polygon'", "rigid body \"wall\" reaches into the particle domains of body \"b\"",
+                "0.015 m from the outline, less than the domain's half width 0.025 m", "gap of at least 0.025 m",
+                "contact_detection = \"node\""});
+  EXPECT_EQ(error_of(with_wall("0.4", true)), "");  // domains touching the wall
+  expect_error(with_wall("0.3", true), "polygon = [[0.3", {"rigid body \"wall\" overlaps body \"b\" at the start"});
+}
+
 // An adiabatic cut's expanded scene keeps its far-field side temperature with conduction off: it must read back
 // (resume, analyze and plot read it; a check refusing side temperatures without conduction broke them).
 TEST(SceneValidation, AnAdiabaticCutsSceneReadsBack) {
