@@ -1,0 +1,225 @@
+"""Does a cut depend on how the grid is oriented? The same cut, rotated against the grid.
+
+usage: /usr/bin/python3 tools/grid_orientation_study.py MPMCUT CASE OUT [--angles 0,15,30,45] [--cells 12e-6,8e-6]
+                                                        [--threads 1] [--set KEY=VALUE ...]
+
+For each cell size the cutting case is expanded by the program itself (a one-step run writes its complete
+scene.toml), and that scene is rotated by each angle about the workpiece's lower-left corner: the workpiece, the
+tool (its polygon, its edge rounding and its velocity) and the grid's extent. The grid's fixed sides cannot hold a
+rotated workpiece's sides, so in every variant, the unrotated one too, a base of the same material fills the wedge
+between the workpiece's bottom and left sides and the grid's fixed bottom and left sides (at 0 deg a strip three
+cells thick); the thermal sides are the preset's. The tool force (rigid_forces.csv)
+is turned back into the tool's frame: Fc along the cutting direction, Ft normal to it, per mm of width. Each variant
+is its own run directory, run with --keep-complete: a rerun keeps what is complete (the study is resumable).
+
+Writes OUT/grid_orientation.csv and OUT/grid_orientation.md: per cell size and angle, the mean Fc and Ft over the
+second half of the cut, the tool's work and its partition (plastic, damage, friction), the damage dissipation
+(J/m) and the run's status. The preset's own run with fixed grid
+sides (angle "preset") is listed beside them.
+"""
+import csv
+import math
+import os
+import subprocess
+import sys
+import tomllib
+
+HOLD_CELLS = 3  # the base's thickness at 0 deg, in cells
+
+
+def parse_args(argv):
+    if len(argv) < 4:
+        sys.exit(__doc__)
+    args = {"binary": argv[1], "case": argv[2], "out": argv[3], "angles": [0.0, 15.0, 30.0, 45.0],
+            "cells": [12e-6, 8e-6], "threads": 1, "sets": []}
+    i = 4
+    while i < len(argv):
+        key = argv[i]
+        if i + 1 >= len(argv):
+            sys.exit(f"error: {key} needs a value\n{__doc__}")
+        value = argv[i + 1]
+        try:
+            if key == "--angles":
+                args["angles"] = [float(v) for v in value.split(",")]
+            elif key == "--cells":
+                args["cells"] = [float(v) for v in value.split(",")]
+            elif key == "--threads":
+                args["threads"] = int(value)
+            elif key == "--set":
+                args["sets"].append(value)
+            else:
+                sys.exit(f"error: unknown option {key}\n{__doc__}")
+        except ValueError:
+            sys.exit(f"error: {key} {value}: not a number (list)")
+        i += 2
+    if any(not (c > 0) for c in args["cells"]):
+        sys.exit("error: --cells: every cell size must be positive (m)")
+    return args
+
+
+def run(cmd, log):
+    with open(log, "w") as f:
+        return subprocess.run(cmd, stdout=f, stderr=subprocess.STDOUT).returncode
+
+
+def toml_value(v):
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, str):
+        return '"' + v.replace("\\", "\\\\").replace('"', '\\"') + '"'
+    if isinstance(v, (int, float)):
+        return repr(float(v)) if isinstance(v, float) else str(v)
+    if isinstance(v, list):
+        return "[" + ", ".join(toml_value(x) for x in v) + "]"
+    raise ValueError(f"cannot write {v!r}")
+
+
+def table(name, d, array=False):
+    lines = [f"[[{name}]]" if array else f"[{name}]"]
+    lines += [f"{k} = {toml_value(v)}" for k, v in d.items() if not isinstance(v, dict)]
+    return "\n".join(lines) + "\n"
+
+
+def rotate(p, c, s):
+    return [c * p[0] - s * p[1], s * p[0] + c * p[1]]
+
+
+def rotated_scene(scene, angle_deg):
+    """The preset's scene rotated by angle_deg; a base of the same material fills the wedge between the workpiece's
+    bottom and left sides and the grid's fixed bottom and left sides (a strip HOLD_CELLS cells thick at 0 deg)."""
+    c, s = math.cos(math.radians(angle_deg)), math.sin(math.radians(angle_deg))
+    h = scene["grid"]["cell_size"]
+    work = next(b for b in scene["body"] if b["name"] == "workpiece")
+    (x0, y0), (x1, y1) = work["rectangle"]["min"], work["rectangle"]["max"]
+    a = HOLD_CELLS * h
+    place = lambda p: rotate([p[0] - x0, p[1] - y0], c, s)  # noqa: E731  (about the workpiece's corner)
+    p0, p1, p5 = place([x0, y0]), place([x1, y0]), place([x0, y1])
+    # The grid's lower-left corner: whole cells below and left of the base (its fixed sides hold the base).
+    left = math.floor((min(p0[0], p5[0]) - a) / h) * h
+    bottom = math.floor((min(p0[1], p1[1]) - a) / h) * h
+    base = [p0, p1, [p1[0], bottom], [left, bottom], [left, p5[1]], p5]
+    (g0x, g0y), (g1x, g1y) = scene["grid"]["min"], scene["grid"]["max"]
+    pts = [place(p) for p in ([g0x, g0y], [g1x, g0y], [g1x, g1y], [g0x, g1y])]
+    top_right = [max(p[0] for p in pts) + 2 * h, max(p[1] for p in pts) + 2 * h]
+    tool = scene["rigid_body"][0]
+
+    out = ["# Generated by tools/grid_orientation_study.py: the cut of the preset scene below, rotated by "
+           f"{angle_deg:g} deg against the grid."]
+    out.append(f"title = {toml_value(scene.get('title', 'cut') + f' rotated {angle_deg:g} deg')}")
+    out.append(table("grid", {"cell_size": h, "min": [left, bottom], "max": top_right}))
+    out.append(table("boundaries", {"left": "fixed", "right": "free", "bottom": "fixed", "top": "free"}))
+    out.append(table("solver", scene["solver"]))
+    output = dict(scene["output"])
+    output["snapshot_interval"] = scene["solver"]["end_time"] / 4
+    out.append(table("output", output))
+    out.append(table("thermal", scene["thermal"]))
+    for m in scene["material"]:
+        out.append(table("material", m, array=True))
+    body = {k: v for k, v in work.items() if k != "rectangle"}
+    body["polygon"] = [p0, p1, place([x1, y1]), p5]
+    out.append(table("body", body, array=True))
+    base_body = dict(body)
+    base_body["name"] = "base"
+    base_body["polygon"] = base
+    out.append(table("body", base_body, array=True))
+    rigid = dict(tool)
+    rigid["polygon"] = [place(p) for p in tool["polygon"]]
+    rigid["velocity"] = rotate(tool["velocity"], c, s)
+    out.append(table("rigid_body", rigid, array=True))
+    return "\n".join(out)
+
+
+def mean_tool_forces(run_dir, angle_deg, speed):
+    """Mean Fc, Ft (N/mm) over the second half of the tool travel, in the tool's frame."""
+    c, s = math.cos(math.radians(angle_deg)), math.sin(math.radians(angle_deg))
+    with open(os.path.join(run_dir, "rigid_forces.csv"), newline="") as f:
+        rows = list(csv.DictReader(f))
+    end = float(rows[-1]["time_s"])
+    fc = ft = 0.0
+    n = 0
+    for r in rows:
+        if float(r["time_s"]) < 0.5 * end:
+            continue
+        fx, fy = float(r["tool_force_x_N_per_m"]), float(r["tool_force_y_N_per_m"])
+        fc += (c * fx + s * fy) / 1000.0
+        ft += (-s * fx + c * fy) / 1000.0
+        n += 1
+    return (fc / n, ft / n) if n else (float("nan"), float("nan"))
+
+
+def summary_of(run_dir):
+    import json
+    with open(os.path.join(run_dir, "summary.json")) as f:
+        return json.load(f)
+
+
+def main(argv):
+    a = parse_args(argv)
+    os.makedirs(a["out"], exist_ok=True)
+    rows = []
+    for h in a["cells"]:
+        tag = f"{h * 1e6:g}um"
+        preset = os.path.join(a["out"], f"preset_{tag}")
+        sets = [x for s in a["sets"] for x in ("--set", s)]
+        base = [a["binary"], "run", a["case"], "--set", f"cutting.cell_size={h!r}", *sets, "--no-plots",
+                "--no-progress", "--threads", str(a["threads"])]
+        # The preset itself, whole (its scene.toml is the one rotated; its forces are the fixed-sides reference).
+        code = run(base + ["--out", preset, "--keep-complete"], preset + ".log")
+        if not os.path.exists(os.path.join(preset, "scene.toml")):
+            sys.exit(f"error: {a['case']} at cell {h:g} m did not start (exit {code}); see {preset}.log")
+        with open(os.path.join(preset, "scene.toml"), "rb") as f:
+            scene = tomllib.load(f)
+        speed = math.hypot(*scene["rigid_body"][0]["velocity"])
+        variants = [("preset", preset, code, 0.0)]
+        for angle in a["angles"]:
+            d = os.path.join(a["out"], f"rotated_{angle:g}deg_{tag}")
+            case = d + ".toml"
+            with open(case, "w") as f:
+                f.write(rotated_scene(scene, angle))
+            print(f"cell {tag}, {angle:g} deg ...", flush=True)
+            code = run([a["binary"], "run", case, "--out", d, "--keep-complete", "--no-plots", "--no-progress",
+                        "--threads", str(a["threads"])], d + ".log")
+            variants.append((f"{angle:g}", d, code, angle))
+        for name, d, code, angle in variants:
+            try:
+                s = summary_of(d)
+            except (OSError, ValueError):
+                rows.append({"cell_um": h * 1e6, "angle_deg": name, "status": f"no summary (exit {code})"})
+                continue
+            fc, ft = mean_tool_forces(d, angle, speed)
+            e = s.get("energy_J_per_m", {})
+            work = e.get("external_work", float("nan"))
+            frac = lambda k: e.get(k, float("nan")) / work if work else float("nan")  # noqa: E731
+            rows.append({"cell_um": h * 1e6, "angle_deg": name, "status": s.get("status", "?"),
+                         "Fc_N_per_mm": fc, "Ft_N_per_mm": ft, "tool_work_J_per_m": work,
+                         "plastic_fraction": frac("plastic_work"), "damage_fraction": frac("damage_dissipation"),
+                         "friction_fraction": frac("friction_work"),
+                         "damage_J_per_m": e.get("damage_dissipation", float("nan")),
+                         "wall_time_s": s.get("wall_time_s", float("nan"))})
+    keys = ["cell_um", "angle_deg", "status", "Fc_N_per_mm", "Ft_N_per_mm", "tool_work_J_per_m", "plastic_fraction",
+            "damage_fraction", "friction_fraction", "damage_J_per_m", "wall_time_s"]
+    with open(os.path.join(a["out"], "grid_orientation.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=keys)
+        w.writeheader()
+        for r in rows:
+            w.writerow({k: (f"{r[k]:.6g}" if isinstance(r.get(k), float) else r.get(k, "")) for k in keys})
+    fmt = lambda v, d: (f"{v:.{d}f}" if isinstance(v, float) and math.isfinite(v) else "–")  # noqa: E731
+    with open(os.path.join(a["out"], "grid_orientation.md"), "w") as f:
+        f.write(f"# The cut of {a['case']} rotated against the grid\n\n"
+                "Mean tool forces over the second half of the cut in the tool's frame (N/mm); the tool's work "
+                "(J/m) and its partition (fractions of it); the damage dissipation (J/m). \"preset\": the "
+                "case as the program builds it; the angles: the same scene rotated, on a base that fills the wedge "
+                "down to the grid's fixed sides.\n\n"
+                "| cell (µm) | angle (°) | status | Fc | Ft | tool work | plastic | damage | friction | damage (J/m) |\n"
+                "|---|---|---|---|---|---|---|---|---|---|\n")
+        for r in rows:
+            f.write(f"| {r['cell_um']:g} | {r['angle_deg']} | {r['status']} | {fmt(r.get('Fc_N_per_mm'), 1)} | "
+                    f"{fmt(r.get('Ft_N_per_mm'), 1)} | {fmt(r.get('tool_work_J_per_m'), 2)} | "
+                    f"{fmt(r.get('plastic_fraction'), 3)} | {fmt(r.get('damage_fraction'), 3)} | "
+                    f"{fmt(r.get('friction_fraction'), 3)} | {fmt(r.get('damage_J_per_m'), 2)} |\n")
+    print(f"wrote {os.path.join(a['out'], 'grid_orientation.csv')} and grid_orientation.md")
+    return 0 if all(r["status"] == "complete" for r in rows) else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
