@@ -15,7 +15,8 @@ is its own run directory, run with --keep-complete: a rerun keeps what is comple
 Writes OUT/grid_orientation.csv and OUT/grid_orientation.md: per cell size and angle, the mean Fc and Ft over the
 second half of the cut, the tool's work and its partition (plastic, damage, friction), the damage dissipation
 (J/m) and the run's status. The preset's own run with fixed grid
-sides (angle "preset") is listed beside them.
+sides (angle "preset") is listed beside them. OUT/grid_orientation.png shows every run's last snapshot turned back
+into the tool's frame, coloured by damage (with matplotlib and meshio).
 """
 import csv
 import math
@@ -153,10 +154,55 @@ def summary_of(run_dir):
         return json.load(f)
 
 
+def plot_final_chips(out, cell_tags, variants_of):
+    """grid_orientation.png: the last snapshot of every variant, turned back into the tool's frame, coloured by damage
+    (one row per cell size). Needs matplotlib and meshio; skipped with a note without them."""
+    try:
+        import glob
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        import meshio
+        import numpy as np
+    except ImportError as e:
+        print(f"note: no grid_orientation.png ({e})")
+        return
+    columns = max(len(v) for v in variants_of.values())
+    fig, axes = plt.subplots(len(cell_tags), columns, figsize=(3.0 * columns, 3.0 * len(cell_tags)), squeeze=False)
+    for i, tag in enumerate(cell_tags):
+        for j in range(columns):
+            ax = axes[i][j]
+            ax.set_axis_off()
+            if j >= len(variants_of[tag]):
+                continue
+            name, run_dir, angle = variants_of[tag][j]
+            files = sorted(glob.glob(os.path.join(run_dir, "snapshots", "*.vtu")))
+            if not files:
+                continue
+            m = meshio.read(files[-1])
+            c, s = math.cos(math.radians(angle)), math.sin(math.radians(angle))
+            x, y = m.points[:, 0], m.points[:, 1]
+            # Back into the tool's frame (about the grid's origin: the shift is the same for every particle).
+            u, v = c * x + s * y, -s * x + c * y
+            keep = m.point_data["body_id"] == 0  # the workpiece, not the base
+            sc = ax.scatter(u[keep] * 1e3, v[keep] * 1e3, c=m.point_data["damage"][keep], s=1.0, cmap="inferno",
+                            vmin=0.0, vmax=1.0, rasterized=True)
+            ax.set_aspect("equal")
+            # Around the chip: its highest particle, the tool (moving to -x) to its right.
+            k = int(np.argmax(np.where(keep, v, -np.inf)))
+            ax.set_xlim(u[k] * 1e3 - 0.3, u[k] * 1e3 + 0.2)
+            ax.set_ylim(v[k] * 1e3 - 0.4, v[k] * 1e3 + 0.05)
+            ax.set_title(f"{tag}, {name}" + (" deg" if name != "preset" else ""), fontsize=9)
+    fig.colorbar(sc, ax=axes, shrink=0.6, label="damage D")
+    fig.savefig(os.path.join(out, "grid_orientation.png"), dpi=150)
+    plt.close(fig)
+
+
 def main(argv):
     a = parse_args(argv)
     os.makedirs(a["out"], exist_ok=True)
     rows = []
+    variants_of = {}
     for h in a["cells"]:
         tag = f"{h * 1e6:g}um"
         preset = os.path.join(a["out"], f"preset_{tag}")
@@ -180,6 +226,7 @@ def main(argv):
             code = run([a["binary"], "run", case, "--out", d, "--keep-complete", "--no-plots", "--no-progress",
                         "--threads", str(a["threads"])], d + ".log")
             variants.append((f"{angle:g}", d, code, angle))
+        variants_of[tag] = [(name, d, angle) for name, d, code, angle in variants]
         for name, d, code, angle in variants:
             try:
                 s = summary_of(d)
@@ -217,7 +264,8 @@ def main(argv):
                     f"{fmt(r.get('Ft_N_per_mm'), 1)} | {fmt(r.get('tool_work_J_per_m'), 2)} | "
                     f"{fmt(r.get('plastic_fraction'), 3)} | {fmt(r.get('damage_fraction'), 3)} | "
                     f"{fmt(r.get('friction_fraction'), 3)} | {fmt(r.get('damage_J_per_m'), 2)} |\n")
-    print(f"wrote {os.path.join(a['out'], 'grid_orientation.csv')} and grid_orientation.md")
+    plot_final_chips(a["out"], list(variants_of), variants_of)
+    print(f"wrote {os.path.join(a['out'], 'grid_orientation.csv')}, grid_orientation.md and grid_orientation.png")
     return 0 if all(r["status"] == "complete" for r in rows) else 1
 
 
