@@ -19,6 +19,7 @@ sides (angle "preset") is listed beside them. OUT/grid_orientation.png shows eve
 into the tool's frame, coloured by damage (with matplotlib and meshio).
 """
 import csv
+import json
 import math
 import os
 import subprocess
@@ -130,7 +131,7 @@ def rotated_scene(scene, angle_deg):
     return "\n".join(out)
 
 
-def mean_tool_forces(run_dir, angle_deg, speed):
+def mean_tool_forces(run_dir, angle_deg):
     """Mean Fc, Ft (N/mm) over the second half of the tool travel, in the tool's frame."""
     c, s = math.cos(math.radians(angle_deg)), math.sin(math.radians(angle_deg))
     with open(os.path.join(run_dir, "rigid_forces.csv"), newline="") as f:
@@ -149,7 +150,6 @@ def mean_tool_forces(run_dir, angle_deg, speed):
 
 
 def summary_of(run_dir):
-    import json
     with open(os.path.join(run_dir, "summary.json")) as f:
         return json.load(f)
 
@@ -215,7 +215,6 @@ def main(argv):
             sys.exit(f"error: {a['case']} at cell {h:g} m did not start (exit {code}); see {preset}.log")
         with open(os.path.join(preset, "scene.toml"), "rb") as f:
             scene = tomllib.load(f)
-        speed = math.hypot(*scene["rigid_body"][0]["velocity"])
         variants = [("preset", preset, code, 0.0)]
         for angle in a["angles"]:
             d = os.path.join(a["out"], f"rotated_{angle:g}deg_{tag}")
@@ -233,7 +232,7 @@ def main(argv):
             except (OSError, ValueError):
                 rows.append({"cell_um": h * 1e6, "angle_deg": name, "status": f"no summary (exit {code})"})
                 continue
-            fc, ft = mean_tool_forces(d, angle, speed)
+            fc, ft = mean_tool_forces(d, angle)
             e = s.get("energy_J_per_m", {})
             work = e.get("external_work", float("nan"))
             frac = lambda k: e.get(k, float("nan")) / work if work else float("nan")  # noqa: E731
