@@ -1,7 +1,5 @@
 #include "run/checkpoint_interval.hpp"
 
-#include <cctype>
-#include <charconv>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -26,14 +24,11 @@ CheckpointInterval parse_checkpoint_interval(std::string_view text) {
                                   "(600s, 10min, 2h) or off",
                                   text, why));
   };
-  std::string s;
-  for (const char c : text)
-    if (!std::isspace(static_cast<unsigned char>(c))) s += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (s == "off" || s == "never" || s == "0") return {CheckpointInterval::Kind::Off, 0.0};
-  double value = 0.0;
-  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
-  if (ec != std::errc() || !(value > 0.0) || !std::isfinite(value)) throw bad("expected a positive number first");
-  const std::string unit = s.substr(static_cast<std::size_t>(end - s.data()));
+  const DurationText d = duration_text(text);
+  if (d.off()) return {CheckpointInterval::Kind::Off, 0.0};
+  const auto number = d.number_and_unit();
+  if (!number) throw bad("expected a positive number first");
+  const auto& [value, unit] = *number;
   if (unit.empty() || unit == "step" || unit == "steps") {
     if (value != std::floor(value)) throw bad("a step count must be a whole number");
     return {CheckpointInterval::Kind::Steps, value};
