@@ -169,6 +169,7 @@ def plot_final_chips(out, cell_tags, variants_of):
         return
     columns = max(len(v) for v in variants_of.values())
     fig, axes = plt.subplots(len(cell_tags), columns, figsize=(3.0 * columns, 3.0 * len(cell_tags)), squeeze=False)
+    sc = None  # the last scatter drawn: the colour bar's source (none when no run wrote a snapshot)
     for i, tag in enumerate(cell_tags):
         for j in range(columns):
             ax = axes[i][j]
@@ -193,6 +194,10 @@ def plot_final_chips(out, cell_tags, variants_of):
             ax.set_xlim(u[k] * 1e3 - 0.3, u[k] * 1e3 + 0.2)
             ax.set_ylim(v[k] * 1e3 - 0.4, v[k] * 1e3 + 0.05)
             ax.set_title(f"{tag}, {name}" + (" deg" if name != "preset" else ""), fontsize=9)
+    if sc is None:
+        print("note: no grid_orientation.png (no run wrote a snapshot)")
+        plt.close(fig)
+        return
     fig.colorbar(sc, ax=axes, shrink=0.6, label="damage D")
     fig.savefig(os.path.join(out, "grid_orientation.png"), dpi=150)
     plt.close(fig)
