@@ -16,6 +16,10 @@ enum class TimeScheme { USL, MUSL };
 // particle domains reach the surface; Gap, the gap between the surface and the nearest particle domain of
 // the node, which the material may close within the step but not cross.
 enum class ContactDetection { Node, Particle, Gap, Penalty };
+// The volumetric strain rate a particle's constitutive update sees (docs/solver.md, "Volumetric averaging"): its
+// own (Off), or a mass-weighted average through the nodes around it, with the mean stress of the internal force
+// projected the same way (Nodal): against volumetric locking of plastic flow that does not follow the grid.
+enum class VolumetricAverage { Off, Nodal };
 enum class BoundaryKind { Free, Fixed, Roller };  // Roller = slip: normal velocity zero
 
 struct Rectangle {
@@ -135,6 +139,7 @@ struct SolverSpec {
   // the overlap at a contact pressure p is then about 8 C^2 p / (penalty_stiffness rho c^2) of the
   // particle's half-width (C the CFL number): small, and a fixed share of the particle on every grid.
   double penalty_stiffness = 1.0;  // -
+  VolumetricAverage volumetric_average = VolumetricAverage::Off;
 
   bool operator==(const SolverSpec&) const = default;  // field-wise, for round-trip tests
 };

@@ -293,6 +293,8 @@ SolverSpec read_solver(TableReader t, SolverSpec s) {
       s.contact_detection);
   s.penalty_stiffness = t.number("penalty_stiffness", s.penalty_stiffness,
                                  Range::closed(0.01, 2.0, "", "x m / dt_stable^2 per unit overlap; contact_detection = \"penalty\""));
+  s.volumetric_average = t.choice<VolumetricAverage>(
+      "volumetric_average", {{"off", VolumetricAverage::Off}, {"nodal", VolumetricAverage::Nodal}}, s.volumetric_average);
   t.reject_unknown_keys();
   return s;
 }

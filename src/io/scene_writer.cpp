@@ -113,6 +113,8 @@ void write_scene_tables(const Scene& s, std::ostream& out) {
   // existed, so committed run records (validate --records) still match their conditions.
   if (s.solver.contact_detection == ContactDetection::Penalty)
     out << "penalty_stiffness = " << num(s.solver.penalty_stiffness) << "\n";
+  // Likewise only when on.
+  if (s.solver.volumetric_average == VolumetricAverage::Nodal) out << "volumetric_average = \"nodal\"\n";
 
   out << "\n[output]\n";
   out << "snapshot_interval = " << num(s.output.snapshot_interval) << "\n";

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <stdexcept>
 #include <string>
 
@@ -120,8 +121,14 @@ void Simulation::particles_to_grid() {
   fields.mass_position = !contact_.empty();
   fields.temperature = conduct_now_;
   fields.heat_capacity = conduct_now_ || contact_.has_friction();
-  mpmcut::particles_to_grid(particles_, shapes_, scene_.materials, inertia_factor_, scene_.body_force, fields, parallel_,
-                     colouring_, grid_);
+  colouring_.bucket(particles_, grid_, shapes_);
+  std::span<const double> node_mean_stress;
+  if (averaging_volumetric_rates()) {
+    volumetric_average_.project_mean_stress(particles_, grid_, shapes_, colouring_, parallel_);
+    node_mean_stress = volumetric_average_.node_mean_stress();
+  }
+  mpmcut::particles_to_grid(particles_, shapes_, scene_.materials, inertia_factor_, scene_.body_force, fields,
+                            node_mean_stress, parallel_, colouring_, grid_);
   apply_velocity_boundary_conditions(BoundaryPhase::AfterP2G, parallel_, grid_);
 }
 
@@ -172,7 +179,13 @@ void Simulation::remap_momentum_musl(double dt) {
 }
 
 void Simulation::update_stress(double dt) {
-  update_velocity_gradients(particles_, grid_, shapes_, dt, parallel_);
+  if (averaging_volumetric_rates()) {
+    compute_velocity_gradients(particles_, grid_, shapes_, parallel_);
+    volumetric_average_.average_volumetric_rates(particles_, grid_, shapes_, colouring_, parallel_);
+    advance_deformation_gradients(particles_, dt, parallel_);
+  } else {
+    update_velocity_gradients(particles_, grid_, shapes_, dt, parallel_);
+  }
   Particles& P = particles_;
   const std::size_t n = P.size();
   increments_.resize(n);

@@ -19,6 +19,7 @@
 #include "physics/material.hpp"
 #include "solver/guards.hpp"
 #include "solver/restart_state.hpp"
+#include "solver/volumetric_average.hpp"
 #include "thermal/heat_conduction.hpp"
 
 namespace mpmcut {
@@ -83,6 +84,7 @@ class Simulation {
   void remove_escaped_particles();
   void check_guards() const;
 
+  bool averaging_volumetric_rates() const { return scene_.solver.volumetric_average == VolumetricAverage::Nodal; }
   double resolve_mass_scaling();
   double mechanical_time_step() const;
   void check_fixed_time_step() const;  // std::invalid_argument for a step beyond stability
@@ -106,6 +108,7 @@ class Simulation {
   RestartState state_;
   // Scratch, reused every step
   StripColouring colouring_;  // this step's P2G strips, reused by the MUSL remap and conduction
+  NodalVolumetricAverage volumetric_average_;  // [solver] volumetric_average = "nodal": this step's nodal fields
   std::vector<Vec2> position_new_;
   std::vector<ConstitutiveIncrement> increments_;
   std::vector<double> deposited_heat_;  // frictional heat taken by each particle this step, J/m

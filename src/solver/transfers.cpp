@@ -6,17 +6,24 @@ namespace mpmcut {
 
 void particles_to_grid(const Particles& P, std::span<const ShapeFunction> body_shapes,
                        const std::vector<MaterialParameters>& materials, double inertia_factor, const Vec2& b,
-                       P2GFields fields, bool parallel, StripColouring& colouring, Grid& G) {
+                       P2GFields fields, std::span<const double> node_mean_stress, bool parallel,
+                       const StripColouring& colouring, Grid& G) {
   G.reset();
-  colouring.bucket(P, G, body_shapes);
+  const bool averaged = !node_mean_stress.empty();
   colouring.for_each(parallel, [&](std::size_t p) {
     const double m = inertia_factor * P.mass[p];  // inertial (scaled) mass
     const Vec2 mv = m * P.velocity[p];
-    const Mat2 sigma = P.stress[p].in_plane();
+    Mat2 sigma = P.stress[p].in_plane();
     const double V = P.volume[p];
     // Heat capacity from the true mass: mass scaling changes inertia only.
     const double mc = fields.heat_capacity ? P.mass[p] * materials[P.material[p]].specific_heat : 0.0;
-    for_each_stencil_node(G, particle_stencil(G, body_shapes, P, p), [&](int n, double w, const Vec2& grad) {
+    const Stencil st = particle_stencil(G, body_shapes, P, p);
+    if (averaged) {
+      double projected = 0.0;  // sum_n S_pn pi_n / M_n
+      for_each_stencil_weight(G, st, [&](int n, double w) { projected += w * node_mean_stress[n]; });
+      sigma += (P.mass[p] / V * projected - 0.5 * sigma.trace()) * Mat2::Identity();
+    }
+    for_each_stencil_node(G, st, [&](int n, double w, const Vec2& grad) {
       G.mass[n] += w * m;
       G.momentum[n] += w * mv;
       G.force[n] += -V * (sigma * grad) + (w * m) * b;
@@ -73,20 +80,45 @@ void remap_momentum_musl(const Particles& P, std::span<const ShapeFunction> body
     G.velocity_new[n] = G.mass[n] > 0.0 ? Vec2(G.momentum[n] / G.mass[n]) : Vec2::Zero();
 }
 
+namespace {
+
+Mat2 velocity_gradient(const Particles& P, const Grid& G, std::span<const ShapeFunction> body_shapes, std::size_t p) {
+  Mat2 L = Mat2::Zero();
+  // Nodes with a non-zero gradient only (a zero term could flip the sign of a zero).
+  for_each_stencil_gradient(G, particle_stencil(G, body_shapes, P, p), [&](int node, const Vec2& grad) {
+    L += G.velocity_new[node] * grad.transpose();
+  });
+  return L;
+}
+
+void advance_deformation_gradient(Particles& P, double dt, std::size_t p) {
+  P.deformation_gradient[p] = (Mat2::Identity() + dt * P.velocity_gradient[p]) * P.deformation_gradient[p];
+  P.volume[p] = P.deformation_gradient[p].determinant() * P.initial_volume[p];
+}
+
+}  // namespace
+
 void update_velocity_gradients(Particles& P, const Grid& G, std::span<const ShapeFunction> body_shapes, double dt,
                                bool parallel) {
   const std::size_t n = P.size();
 #pragma omp parallel for schedule(static) if (parallel)
   for (std::size_t p = 0; p < n; ++p) {
-    Mat2 L = Mat2::Zero();
-    // Nodes with a non-zero gradient only (a zero term could flip the sign of a zero).
-    for_each_stencil_gradient(G, particle_stencil(G, body_shapes, P, p), [&](int node, const Vec2& grad) {
-      L += G.velocity_new[node] * grad.transpose();
-    });
-    P.velocity_gradient[p] = L;
-    P.deformation_gradient[p] = (Mat2::Identity() + dt * L) * P.deformation_gradient[p];
-    P.volume[p] = P.deformation_gradient[p].determinant() * P.initial_volume[p];
+    P.velocity_gradient[p] = velocity_gradient(P, G, body_shapes, p);
+    advance_deformation_gradient(P, dt, p);
   }
+}
+
+void compute_velocity_gradients(Particles& P, const Grid& G, std::span<const ShapeFunction> body_shapes,
+                                bool parallel) {
+  const std::size_t n = P.size();
+#pragma omp parallel for schedule(static) if (parallel)
+  for (std::size_t p = 0; p < n; ++p) P.velocity_gradient[p] = velocity_gradient(P, G, body_shapes, p);
+}
+
+void advance_deformation_gradients(Particles& P, double dt, bool parallel) {
+  const std::size_t n = P.size();
+#pragma omp parallel for schedule(static) if (parallel)
+  for (std::size_t p = 0; p < n; ++p) advance_deformation_gradient(P, dt, p);
 }
 
 }  // namespace mpmcut

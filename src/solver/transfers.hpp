@@ -22,11 +22,14 @@ struct P2GFields {
   bool temperature = false;    // sum S m c T / sum S m c: conduction this step (needs heat_capacity)
 };
 
-// Resets the grid, buckets the particles into `colouring` and maps mass, momentum, internal force
-// -V sigma grad S plus body force, and `fields`; then the nodal velocity (and temperature).
+// Resets the grid and maps mass, momentum, internal force -V sigma grad S plus body force, and `fields`, in the
+// strips of `colouring` (bucketed for these positions); then the nodal velocity (and temperature).
+// `node_mean_stress` non-empty (volumetric_average.hpp): the in-plane mean stress in sigma is replaced by
+// (m_p / V_p) sum_n S_pn node_mean_stress[n].
 void particles_to_grid(const Particles& particles, std::span<const ShapeFunction> body_shapes,
                        const std::vector<MaterialParameters>& materials, double inertia_factor, const Vec2& body_force,
-                       P2GFields fields, bool parallel, StripColouring& colouring, Grid& grid);
+                       P2GFields fields, std::span<const double> node_mean_stress, bool parallel,
+                       const StripColouring& colouring, Grid& grid);
 
 // Particle velocity from the updated grid velocity as the FLIP/PIC blend (flip fraction), and the
 // new position x + dt v_PIC into position_new. transfer_loss[p] receives the kinetic energy the
@@ -44,5 +47,10 @@ void remap_momentum_musl(const Particles& particles, std::span<const ShapeFuncti
 // gradient F <- (I + dt L) F and the volume det F V0 of every particle.
 void update_velocity_gradients(Particles& particles, const Grid& grid, std::span<const ShapeFunction> body_shapes,
                                double dt, bool parallel);
+
+// The same in two halves, for a change of L in between (volumetric_average.hpp): L only, then F and V from it.
+void compute_velocity_gradients(Particles& particles, const Grid& grid, std::span<const ShapeFunction> body_shapes,
+                                bool parallel);
+void advance_deformation_gradients(Particles& particles, double dt, bool parallel);
 
 }  // namespace mpmcut

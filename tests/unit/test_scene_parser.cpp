@@ -813,5 +813,21 @@ TEST(SceneWriter, RoundTripsEveryContactDetection) {
   EXPECT_EQ(node_text.str().find("penalty_stiffness"), std::string::npos);
 }
 
+// The nodal volumetric average is read, written back only when on (committed scenes keep their text), and a name
+// it does not know is refused with the ones it does.
+TEST(SceneWriter, RoundTripsTheVolumetricAverage) {
+  const Scene nodal = parse_scene(kBase, "case.toml", {"solver.volumetric_average=\"nodal\""});
+  EXPECT_EQ(nodal.solver.volumetric_average, VolumetricAverage::Nodal);
+  EXPECT_EQ(round_trip(nodal).solver.volumetric_average, VolumetricAverage::Nodal);
+  const Scene off = parse_scene(kBase, "case.toml");
+  EXPECT_EQ(off.solver.volumetric_average, VolumetricAverage::Off);
+  std::ostringstream off_text;
+  write_scene(Case{off}, off_text);
+  EXPECT_EQ(off_text.str().find("volumetric_average"), std::string::npos);
+  const std::string e = error_of(kBase, {"solver.volumetric_average=\"bbar\""});
+  EXPECT_NE(e.find("volumetric_average"), std::string::npos) << e;
+  EXPECT_NE(e.find("nodal"), std::string::npos) << e;
+}
+
 }  // namespace
 }  // namespace mpmcut

@@ -42,8 +42,8 @@ struct Ledger {
   double residual_without_algorithmic = 0.0;
 };
 
-Ledger run(const std::vector<std::string>& overrides) {
-  Simulation sim(parse_case(kObliqueImpact, "oblique_impact.toml", overrides).scene);
+Ledger run(const std::vector<std::string>& overrides, const char* case_text = kObliqueImpact) {
+  Simulation sim(parse_case(case_text, "case.toml", overrides).scene);
   const double end = sim.scene().solver.end_time;
   while (sim.time() < end * (1 - 1e-12)) sim.step(end - sim.time());
   sim.refresh_energy();
@@ -75,6 +75,46 @@ TEST(EnergyLedger, ObliqueImpactWithFrictionClosesWithinOnePercent) {
   EXPECT_LT(std::abs(blend.relative_residual), 0.01);
   // Without the blend term the ledger would not close: the test can fail.
   EXPECT_GT(std::abs(blend.residual_without_algorithmic), std::abs(blend.relative_residual) + 0.005);
+}
+
+// Two Ti-6Al-4V disks colliding at 300 m/s, off-centre, in one velocity field (no rigid contact: the structural
+// losses of the tool contact, 0.6-3 % in the impact above, would hide what is checked), pure FLIP: a strongly
+// volumetric, plastic flow.
+constexpr const char* kCollidingDisks = R"toml(
+title = "two disks colliding"
+[grid]
+cell_size = 50.0e-6
+min = [0.0, 0.0]
+max = [4.0e-3, 2.5e-3]
+[solver]
+end_time = 6.0e-6
+flip_fraction = 1.0
+[[material]]
+name = "ti64"
+library = "ti64-johnson-1985"
+damage = false
+[[body]]
+name = "left"
+material = "ti64"
+disk = { center = [1.35e-3, 1.25e-3], radius = 0.6e-3 }
+velocity = [150.0, 30.0]
+[[body]]
+name = "right"
+material = "ti64"
+disk = { center = [2.65e-3, 1.0e-3], radius = 0.6e-3 }
+velocity = [-150.0, 0.0]
+)toml";
+
+// With the nodal average of the volumetric rate ([solver] volumetric_average = "nodal") the materials book the work
+// of the averaged rate, and the nodal forces carry the transposed projection of the mean stress: the ledger closes
+// as it does without the average (-0.34 % against -0.20 %; plastic work 100 J/m of 119 J/m). Averaging the rate
+// alone, with the particles' own mean stress in the forces, creates +5.9 % here (+42 % of the tool's work in a cut):
+// the bound fails for a force side that is not the rate's transpose.
+TEST(EnergyLedger, CollidingDisksCloseWithTheNodalVolumetricAverage) {
+  const Ledger l = run({"solver.volumetric_average=\"nodal\""}, kCollidingDisks);
+  print("colliding disks, nodal volumetric average", l);
+  EXPECT_GT(l.e.plastic_work, 0.5 * l.e.initial);
+  EXPECT_LT(std::abs(l.relative_residual), 0.01);
 }
 
 // The blend term is the energy the PIC share removes: zero for pure FLIP, larger the more PIC.

@@ -19,8 +19,8 @@
 // (second DISABLED_ test: 2.46 and 2.55); the rest is the zone's width. A direction-dependent length, a second
 // velocity field across failed particles and a softening strain averaged over a band three cells wide (nonlocal)
 // were tried and do not remove it: the width is kinematic (docs/theory_materials.md §10). Most of it is volumetric
-// locking: a consistent nodal average of the volumetric rate gives 1.78 / 1.56 (triaxial 2.07 / 1.55) with the band
-// along the grid unchanged (§10, "Kinematic prototypes"; docs/prototypes/crack_visibility.patch, not in the solver).
+// locking: the consistent nodal average of the volumetric rate ([solver] volumetric_average = "nodal", off by
+// default) gives 1.78 / 1.56 (triaxial 2.07 / 1.55) with the band along the grid unchanged (the last two tests).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -73,13 +73,15 @@ BodySpec strip(const std::string& name, const std::string& material, double n0, 
 
 // Dissipation per unit length of the layer's middle over G_f, after `slip_time` of sliding.
 double band_dissipation_over_gf(double theta_deg, double h, double slip_time,
-                                Initiation initiation = Initiation::Constant) {
+                                Initiation initiation = Initiation::Constant,
+                                VolumetricAverage average = VolumetricAverage::Off) {
   const double theta = theta_deg * std::numbers::pi / 180.0, L = 30 * h, H = 4 * h, v0 = 5.0, d = h / 2;
   const Vec2 s(std::cos(theta), std::sin(theta)), n(-std::sin(theta), std::cos(theta));
   const Vec2 o(3 * h + 8 * h * std::sin(theta), 3 * h);
   Scene scene;
   scene.grid = {h, Vec2(0, 0), Vec2(L * std::cos(theta) + 20 * h, L * std::sin(theta) + H + 20 * h)};
   scene.solver.cfl = 0.4;
+  scene.solver.volumetric_average = average;
   scene.materials.push_back(band_material("layer", 0.1, initiation));
   scene.materials.push_back(band_material("seed", 0.02, initiation));
   scene.materials.push_back(elastic_material("heavy", kE * 1e4, kNu, kRho * 1e4));
@@ -100,8 +102,10 @@ double band_dissipation_over_gf(double theta_deg, double h, double slip_time,
     if (along >= 0.2 * L && along <= 0.8 * L) dissipation += P.damage_dissipation[p];
   }
   const double ratio = dissipation / (kFractureEnergy * 0.6 * L);
-  std::printf("band at %.1f deg to the grid, h = %.0f um, %s failure strain: dissipation / (G_f length) = %.3f\n",
-              theta_deg, h * 1e6, initiation == Initiation::Constant ? "constant" : "triaxial", ratio);
+  std::printf("band at %.1f deg to the grid, h = %.0f um, %s failure strain, volumetric average %s: dissipation / "
+              "(G_f length) = %.3f\n",
+              theta_deg, h * 1e6, initiation == Initiation::Constant ? "constant" : "triaxial",
+              average == VolumetricAverage::Nodal ? "nodal" : "off", ratio);
   return ratio;
 }
 
@@ -126,4 +130,25 @@ TEST(HillerborgBandOrientation, DISABLED_ABandInclinedToTheGridDissipatesFractur
 TEST(HillerborgBandOrientation, DISABLED_ABandInclinedToTheGridDissipatesFractureEnergyWithTriaxialInitiation) {
   for (double theta : {22.5, 45.0})
     EXPECT_NEAR(band_dissipation_over_gf(theta, 20e-6, slip_time(20e-6), Initiation::Triaxial), 1.0, 0.1) << theta;
+}
+
+// With the nodal average of the volumetric rate (solver/volumetric_average.hpp) the band along the grid is unchanged
+// (1.007 / 1.017 measured) ...
+TEST(HillerborgBandOrientation, WithTheNodalVolumetricAverageABandAlongTheGridStillDissipatesFractureEnergy) {
+  for (double h : {20e-6, 10e-6})
+    EXPECT_NEAR(band_dissipation_over_gf(0.0, h, slip_time(h), Initiation::Constant, VolumetricAverage::Nodal), 1.0,
+                0.05)
+        << h;
+}
+
+// ... and most of the inclined band's excess is gone: 1.78 G_f at 22.5 deg and 1.56 at 45 deg on 20 um cells
+// (without it 3.06 and 2.58, the DISABLED_ test above). The bounds fail if the average does nothing or breaks the
+// band (below 1: a band that never softens fully); what is left grows after the band has failed (§10).
+TEST(HillerborgBandOrientation, TheNodalVolumetricAverageTakesMostOfTheInclinedBandsExcessAway) {
+  for (double theta : {22.5, 45.0}) {
+    const double ratio =
+        band_dissipation_over_gf(theta, 20e-6, slip_time(20e-6), Initiation::Constant, VolumetricAverage::Nodal);
+    EXPECT_GT(ratio, 0.95) << theta;
+    EXPECT_LT(ratio, theta < 30.0 ? 2.0 : 1.8) << theta;
+  }
 }
