@@ -309,6 +309,10 @@ void add_validate_command(CLI::App& app) {
                 "How the tool contact finds the material (solver.contact_detection; default node; penalty: a "
                 "spring per particle, smooth in the tool's position on the grid, docs/cutting.md)")
       ->check(CLI::IsMember(contact_detection_names()));
+  v->add_option("--volumetric-average", o->volumetric_average,
+                "The volumetric strain rate of every run (solver.volumetric_average; default off; nodal: averaged "
+                "through the nodes against volumetric locking of inclined shear bands, docs/solver.md)")
+      ->check(CLI::IsMember(volumetric_average_names()));
   // The tool's thermal options: bounded numbers that, when given, go into every case file.
   struct ThermalOption {
     const char* name;

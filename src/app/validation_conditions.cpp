@@ -151,6 +151,7 @@ ConditionRunSettings run_settings(const Options& o) {
   s.tool_heat_transfer_coefficient = o.tool_heat_transfer_coefficient;
   s.tool_temperature = o.tool_temperature;
   s.contact_detection = o.contact_detection;
+  s.volumetric_average = o.volumetric_average;
   return s;
 }
 

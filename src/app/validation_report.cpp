@@ -497,6 +497,9 @@ std::string assumptions_section(const ReportParts& r) {
     << "; contact detection: "
     << (settings.contact_detection.empty() ? std::string("node (the preset's)")
                                            : settings.contact_detection + " (--contact-detection)")
+    << "; volumetric strain rate: "
+    << (settings.volumetric_average.empty() ? std::string("each particle's own (the preset's)")
+                                            : settings.volumetric_average + " (--volumetric-average)")
     << ".\n"
     << "- Material: the `" << settings.material << "` set"
     << (settings.material_definitions.empty() ? " of the material library" : "") << " ("

@@ -162,4 +162,6 @@ std::vector<std::string> contact_detection_names() {
   return names;
 }
 
+std::vector<std::string> volumetric_average_names() { return {"off", "nodal"}; }
+
 }  // namespace mpmcut

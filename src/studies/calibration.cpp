@@ -426,7 +426,9 @@ void Calibrator::write_results(const Evaluation& best, const std::vector<Conditi
                                : " with " + own_resolutions + " instead") +
       // The contact only when chosen, so that a configuration without it reports as before.
       (c_.runs.contact_detection.empty() ? std::string()
-                                         : fmt::format(", {} contact", c_.runs.contact_detection));
+                                         : fmt::format(", {} contact", c_.runs.contact_detection)) +
+      (c_.runs.volumetric_average.empty() ? std::string()
+                                          : fmt::format(", volumetric average {}", c_.runs.volumetric_average));
 
   // The best set, ready to paste into a case file or materials/.
   const auto friction_index = [&]() -> std::optional<std::size_t> {

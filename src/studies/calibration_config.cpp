@@ -104,14 +104,18 @@ CalibrationConfig read_calibration_config(const fs::path& file, std::string_view
     if (r->has("friction")) c.runs.friction_note = "the calibration's [runs] friction";
     // The contact of every run, as `validate --contact-detection` (empty: the preset's node detection, so
     // that existing configurations write the same case files).
-    c.runs.contact_detection = r->string("contact_detection", "");
-    if (r->has("contact_detection")) {
-      const std::vector<std::string> names = contact_detection_names();
+    // Likewise the volumetric strain rate, as `validate --volumetric-average`.
+    const auto solver_choice = [&](const char* key, const std::vector<std::string>& names) {
+      const std::string value = r->string(key, "");
+      if (!r->has(key)) return value;
       std::string allowed;
       for (const std::string& n : names) allowed += (allowed.empty() ? "one of \"" : " | \"") + n + "\"";
-      if (std::find(names.begin(), names.end(), c.runs.contact_detection) == names.end())
-        r->fail("contact_detection", fmt::format("must be {}, got \"{}\"", allowed, c.runs.contact_detection));
-    }
+      if (std::find(names.begin(), names.end(), value) == names.end())
+        r->fail(key, fmt::format("must be {}, got \"{}\"", allowed, value));
+      return value;
+    };
+    c.runs.contact_detection = solver_choice("contact_detection", contact_detection_names());
+    c.runs.volumetric_average = solver_choice("volumetric_average", volumetric_average_names());
     r->reject_unknown_keys();
   }
 

@@ -370,8 +370,12 @@ std::string condition_case_text(const CuttingCondition& c, const ConditionRunSet
   s += "mass_scaling = \"auto\"     # workpiece inertia up to an inertia number of 0.002 (docs/mass_scaling.md)\n";
   s += fmt::format("particles_per_cell = {}\n", o.quick ? 1 : 2);
   s += fmt::format("snapshots = {}\n", o.snapshots > 0 ? o.snapshots : o.quick ? 2 : 20);
+  std::string solver;
   if (!o.contact_detection.empty())
-    s += fmt::format("\n[solver]\ncontact_detection = \"{}\"  # chosen with --contact-detection\n", o.contact_detection);
+    solver += fmt::format("contact_detection = \"{}\"  # chosen with --contact-detection\n", o.contact_detection);
+  if (!o.volumetric_average.empty())
+    solver += fmt::format("volumetric_average = \"{}\"  # chosen with --volumetric-average\n", o.volumetric_average);
+  if (!solver.empty()) s += "\n[solver]\n" + solver;
   return s;
 }
 

@@ -123,6 +123,8 @@ struct ConditionRunSettings {
   // solver.contact_detection of every case (a name as the case file spells it); empty: the preset's, and the
   // case text stays as it was before the option existed (committed run records still match).
   std::string contact_detection;
+  // solver.volumetric_average of every case ("off" or "nodal"); empty: the preset's (off), the case text unchanged.
+  std::string volumetric_average;
 };
 
 // The edge radius of a chip-type condition whose source gives none: the cutting preset's default, um.

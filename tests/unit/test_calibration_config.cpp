@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "io/input_error.hpp"
+#include "run/case_loading.hpp"
 #include "studies/calibration.hpp"
 #include "studies/measured_conditions.hpp"
 
@@ -111,6 +112,28 @@ TEST(CalibrationConfig, ContactDetectionReachesTheCaseFiles) {
   EXPECT_NE(e.find("runs.contact_detection"), std::string::npos) << e;
   EXPECT_NE(e.find("\"penalty\""), std::string::npos) << e;  // the allowed names are listed
   EXPECT_NE(e.find("got \"glue\""), std::string::npos) << e;
+}
+
+// [runs] volumetric_average likewise, in the same [solver] table as the contact; the case text parses and its scene
+// carries it.
+TEST(CalibrationConfig, VolumetricAverageReachesTheCaseFiles) {
+  const std::string base = "name = \"fit\"\n" + kParameter + kData;
+  const CuttingCondition condition{"h0.1mm_vc100mpmin", "forces", 100.0 / 60.0, 0.1, 34.4};
+  const CalibrationConfig off = read_calibration_config(write("off.toml", base), kMeasurements);
+  EXPECT_EQ(condition_case_text(condition, off.runs).find("volumetric_average"), std::string::npos);
+
+  const CalibrationConfig both = read_calibration_config(
+      write("both.toml", base + "[runs]\ncontact_detection = \"penalty\"\nvolumetric_average = \"nodal\"\n"),
+      kMeasurements);
+  EXPECT_EQ(both.runs.volumetric_average, "nodal");
+  const std::string text = condition_case_text(condition, both.runs);
+  EXPECT_NE(text.find("[solver]\ncontact_detection = \"penalty\""), std::string::npos) << text;
+  EXPECT_NE(text.find("volumetric_average = \"nodal\""), std::string::npos) << text;
+  EXPECT_EQ(parse_case(text, "case.toml").scene.solver.volumetric_average, VolumetricAverage::Nodal);
+
+  const std::string e = error_of(base + "[runs]\nvolumetric_average = \"bbar\"\n");
+  EXPECT_NE(e.find("runs.volumetric_average"), std::string::npos) << e;
+  EXPECT_NE(e.find("\"nodal\""), std::string::npos) << e;
 }
 
 // A condition's own cells_per_feed reaches its case file; the others keep [runs] cells_per_feed; a value outside

@@ -93,6 +93,12 @@ TEST(ValidationCases, ContactDetectionReachesTheScene) {
   s.contact_detection = "penalty";
   EXPECT_EQ(parse_case(condition_case_text(c, s), "test.toml").scene.solver.contact_detection,
             ContactDetection::Penalty);
+  // --volumetric-average likewise, into the same [solver] table.
+  EXPECT_EQ(parse_case(condition_case_text(c, s), "test.toml").scene.solver.volumetric_average, VolumetricAverage::Off);
+  s.volumetric_average = "nodal";
+  const Scene both = parse_case(condition_case_text(c, s), "test.toml").scene;
+  EXPECT_EQ(both.solver.volumetric_average, VolumetricAverage::Nodal);
+  EXPECT_EQ(both.solver.contact_detection, ContactDetection::Penalty);
 }
 
 // Fc = a + b ln v is recovered exactly; a falling force has a negative slope.
