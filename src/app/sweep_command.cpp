@@ -369,6 +369,11 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
       conv.columns = {"speed_m_per_s", "feed_mm", "finest_pair", "cutting_force_change", "thrust_force_change",
                       "chip_thickness_change", "pitch_change", "chip_type_same"};
       conv.headings = {"V (m/s)", "h (mm)", "cells across h", "ΔFc", "ΔFt", "Δ(t0/tc)", "Δpitch", "same chip type"};
+      // The CSV carries numbers (per cent, blank where a value is missing) for scripts; the table, text.
+      TextTable conv_csv;
+      conv_csv.columns = {"speed_m_per_s", "feed_mm", "cells_per_feed_second_finest", "cells_per_feed_finest",
+                          "cutting_force_change_percent", "thrust_force_change_percent",
+                          "chip_thickness_ratio_change_percent", "pitch_change_percent", "chip_type_same"};
       for (double h : feeds_m)
         for (const std::vector<std::string>& values : combinations)
         for (double v : o.speeds_m_per_s) {
@@ -379,18 +384,33 @@ int run_sweep(const SweepOptions& o, const CLI::App& app) {
           std::sort(idx.begin(), idx.end(), [&](auto a, auto b) { return cases[a].cells_per_feed < cases[b].cells_per_feed; });
           if (idx.size() < 2) continue;
           const CaseResult &a = results[idx[idx.size() - 2]], &b = results[idx.back()];
-          const auto change = [](const std::optional<double>& x, const std::optional<double>& y) -> std::string {
-            if (!x || !y || *x == 0.0) return "";
-            return fmt::format("{:+.1f} %", 100.0 * (*y - *x) / std::abs(*x));
+          const auto percent = [](const std::optional<double>& x,
+                                  const std::optional<double>& y) -> std::optional<double> {
+            if (!x || !y || *x == 0.0) return std::nullopt;
+            return 100.0 * (*y - *x) / std::abs(*x);
           };
+          const auto change = [&](const std::optional<double>& x, const std::optional<double>& y) -> std::string {
+            const std::optional<double> c = percent(x, y);
+            return c ? fmt::format("{:+.1f} %", *c) : "";
+          };
+          const auto number = [&](const std::optional<double>& x, const std::optional<double>& y) -> std::string {
+            const std::optional<double> c = percent(x, y);
+            return c ? fmt::format("{:.2f}", *c) : "";
+          };
+          const int coarse = cases[idx[idx.size() - 2]].cells_per_feed, fine = cases[idx.back()].cells_per_feed;
           conv.rows.push_back({fmt::format("{:g}", v), fmt::format("{:g}", h * 1e3),
-                               fmt::format("{} → {}", cases[idx[idx.size() - 2]].cells_per_feed, cases[idx.back()].cells_per_feed),
+                               fmt::format("{} → {}", coarse, fine),
                                change(a.cutting_force_N_per_mm, b.cutting_force_N_per_mm),
                                change(a.thrust_force_N_per_mm, b.thrust_force_N_per_mm),
                                change(a.chip_thickness_ratio, b.chip_thickness_ratio), change(a.pitch_um, b.pitch_um),
                                chip_type_change(a, b)});
+          conv_csv.rows.push_back({fmt::format("{:g}", v), fmt::format("{:g}", h * 1e3), std::to_string(coarse),
+                                   std::to_string(fine), number(a.cutting_force_N_per_mm, b.cutting_force_N_per_mm),
+                                   number(a.thrust_force_N_per_mm, b.thrust_force_N_per_mm),
+                                   number(a.chip_thickness_ratio, b.chip_thickness_ratio),
+                                   number(a.pitch_um, b.pitch_um), chip_type_change(a, b)});
         }
-      conv.write_csv(out / "convergence.csv");
+      conv_csv.write_csv(out / "convergence.csv");
       s << "## Grid convergence\n\nChange from the second finest to the finest complete resolution of each condition "
            "(relative to the second finest). The study's goals: |ΔFc|, |ΔFt| and |Δ(t0/tc)| < 5 %, |Δpitch| < 10 %, "
            "the same chip type.\n\n"
