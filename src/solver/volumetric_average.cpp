@@ -1,7 +1,5 @@
 #include "solver/volumetric_average.hpp"
 
-#include <algorithm>
-
 #include "core/stencil.hpp"
 
 namespace mpmcut {
