@@ -1,5 +1,6 @@
 #pragma once
 // Small helpers to build scenes in code for tests (the same Scene the input parser produces).
+#include <cmath>
 #include <string>
 
 #include "solver/scene.hpp"
@@ -26,6 +27,21 @@ inline BodySpec rectangle_body(const std::string& name, const std::string& mater
   b.shape.kind = ShapeKind::Rectangle;
   b.shape.rectangle = {lo, hi};
   b.particles_per_cell = ppc;
+  b.velocity = velocity;
+  return b;
+}
+
+// A strip n0 <= n <= n1 across a layer and 0 <= s <= L along it, in the layer's frame: origin o, the layer's
+// direction at theta (rad) to the grid's x axis (so a layer can be turned against the grid).
+inline BodySpec inclined_strip(const std::string& name, const std::string& material, double n0, double n1, double L,
+                               double theta, const Vec2& o, Vec2 velocity) {
+  const Vec2 s(std::cos(theta), std::sin(theta)), n(-std::sin(theta), std::cos(theta));
+  BodySpec b;
+  b.name = name;
+  b.material = material;
+  b.shape.kind = ShapeKind::Polygon;
+  b.shape.polygon.vertices = {o + n0 * n, o + L * s + n0 * n, o + L * s + n1 * n, o + n1 * n};
+  b.particles_per_cell = 2;
   b.velocity = velocity;
   return b;
 }

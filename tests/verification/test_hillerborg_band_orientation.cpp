@@ -57,20 +57,6 @@ MaterialParameters band_material(const std::string& name, double failure_strain,
   return m;
 }
 
-// A strip n0 <= n <= n1 across the layer, 0 <= s <= L along it, in the layer's frame (origin o, angle theta).
-BodySpec strip(const std::string& name, const std::string& material, double n0, double n1, double L, double theta,
-               const Vec2& o, Vec2 velocity) {
-  const Vec2 s(std::cos(theta), std::sin(theta)), n(-std::sin(theta), std::cos(theta));
-  BodySpec b;
-  b.name = name;
-  b.material = material;
-  b.shape.kind = ShapeKind::Polygon;
-  b.shape.polygon.vertices = {o + n0 * n, o + L * s + n0 * n, o + L * s + n1 * n, o + n1 * n};
-  b.particles_per_cell = 2;
-  b.velocity = velocity;
-  return b;
-}
-
 // Dissipation per unit length of the layer's middle over G_f, after `slip_time` of sliding.
 double band_dissipation_over_gf(double theta_deg, double h, double slip_time,
                                 Initiation initiation = Initiation::Constant,
@@ -86,11 +72,11 @@ double band_dissipation_over_gf(double theta_deg, double h, double slip_time,
   scene.materials.push_back(band_material("seed", 0.02, initiation));
   scene.materials.push_back(elastic_material("heavy", kE * 1e4, kNu, kRho * 1e4));
   const double mid = 0.5 * H;
-  scene.bodies.push_back(strip("anchor", "heavy", -2 * h, 0.0, L, theta, o, Vec2::Zero()));
-  scene.bodies.push_back(strip("lower layer", "layer", 0.0, mid - 0.5 * d, L, theta, o, Vec2::Zero()));
-  scene.bodies.push_back(strip("seed", "seed", mid - 0.5 * d, mid + 0.5 * d, L, theta, o, Vec2::Zero()));
-  scene.bodies.push_back(strip("upper layer", "layer", mid + 0.5 * d, H, L, theta, o, Vec2::Zero()));
-  scene.bodies.push_back(strip("driver", "heavy", H, H + 2 * h, L, theta, o, v0 * s));
+  scene.bodies.push_back(inclined_strip("anchor", "heavy", -2 * h, 0.0, L, theta, o, Vec2::Zero()));
+  scene.bodies.push_back(inclined_strip("lower layer", "layer", 0.0, mid - 0.5 * d, L, theta, o, Vec2::Zero()));
+  scene.bodies.push_back(inclined_strip("seed", "seed", mid - 0.5 * d, mid + 0.5 * d, L, theta, o, Vec2::Zero()));
+  scene.bodies.push_back(inclined_strip("upper layer", "layer", mid + 0.5 * d, H, L, theta, o, Vec2::Zero()));
+  scene.bodies.push_back(inclined_strip("driver", "heavy", H, H + 2 * h, L, theta, o, v0 * s));
   Simulation sim(scene);
   auto& P = sim.particles();
   for (std::size_t p = 0; p < P.size(); ++p)
