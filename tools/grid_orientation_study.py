@@ -14,7 +14,9 @@ is its own run directory, run with --keep-complete: a rerun keeps what is comple
 
 Writes OUT/grid_orientation.csv and OUT/grid_orientation.md: per cell size and angle, the mean Fc and Ft over the
 second half of the cut, the tool's work and its partition (plastic, damage, friction), the damage dissipation
-(J/m) and the run's status. The preset's own run with fixed grid
+(J/m), the chip (type, thickness, pitch, segmentation degree: `mpmcut analyze` of the last snapshot turned back into
+the tool's frame, in RUN_DIR_tool_frame; tools/snapshot_transform.py), the tool's travel between two crossings of a
+grid row (cell / sin angle) and the run's status. The preset's own run with fixed grid
 sides (angle "preset") is listed beside them. OUT/grid_orientation.png shows every run's last snapshot turned back
 into the tool's frame, coloured by damage (with matplotlib and meshio).
 """
@@ -22,9 +24,13 @@ import csv
 import json
 import math
 import os
+import shutil
 import subprocess
 import sys
 import tomllib
+import xml.etree.ElementTree as ET
+
+from snapshot_transform import turn_snapshot
 
 HOLD_CELLS = 3  # the base's thickness at 0 deg, in cells
 
@@ -154,6 +160,38 @@ def summary_of(run_dir):
         return json.load(f)
 
 
+def last_snapshot(run_dir):
+    """The last snapshot particles.pvd lists: its file (relative to run_dir) and time (s)."""
+    last = list(ET.parse(os.path.join(run_dir, "particles.pvd")).getroot().iter("DataSet"))[-1]
+    return last.get("file"), float(last.get("timestep"))
+
+
+def chip_in_tool_frame(binary, preset, run_dir, angle_deg, corner):
+    """The chip analysis (`mpmcut analyze`, docs/analysis.md) of a turned run's last snapshot in the preset's frame.
+
+    RUN_DIR_tool_frame gets the preset's scene.toml (the cut's parameters), the run's summary.json and the snapshot
+    turned back by -angle_deg about the turned workpiece's corner (the origin, rotated_scene) onto the preset's corner;
+    the analysis merges its "chip" section there. A rerun reuses a complete one."""
+    d = run_dir + "_tool_frame"
+    if os.path.exists(os.path.join(d, "summary.json")):
+        chip = summary_of(d).get("chip")
+        if chip:
+            return chip
+    file, time = last_snapshot(run_dir)
+    os.makedirs(os.path.dirname(os.path.join(d, file)), exist_ok=True)
+    turn_snapshot(os.path.join(run_dir, file), os.path.join(d, file), -angle_deg, (0.0, 0.0), corner)
+    with open(os.path.join(d, "particles.pvd"), "w") as f:
+        f.write('<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1" byte_order="LittleEndian">\n'
+                f'  <Collection>\n    <DataSet timestep="{time!r}" group="" part="0" file="{file}"/>\n'
+                "  </Collection>\n</VTKFile>\n")
+    shutil.copy(os.path.join(preset, "scene.toml"), d)
+    shutil.copy(os.path.join(run_dir, "summary.json"), d)
+    if run([binary, "analyze", d], d + ".log") != 0:
+        print(f"note: no chip analysis of {run_dir} (see {d}.log)")
+        return None
+    return summary_of(d).get("chip")
+
+
 def plot_final_chips(out, cell_tags, variants_of):
     """grid_orientation.png: the last snapshot of every variant, turned back into the tool's frame, coloured by damage
     (one row per cell size). Needs matplotlib and meshio; skipped with a note without them."""
@@ -231,12 +269,18 @@ def main(argv):
                         "--threads", str(a["threads"])], d + ".log")
             variants.append((f"{angle:g}", d, code, angle))
         variants_of[tag] = [(name, d, angle) for name, d, code, angle in variants]
+        corner = next(b for b in scene["body"] if b["name"] == "workpiece")["rectangle"]["min"]
         for name, d, code, angle in variants:
             try:
                 s = summary_of(d)
             except (OSError, ValueError):
                 rows.append({"cell_um": h * 1e6, "angle_deg": name, "status": f"no summary (exit {code})"})
                 continue
+            chip = s.get("chip") if name == "preset" else None
+            if name != "preset" and s.get("status") == "complete":
+                chip = chip_in_tool_frame(a["binary"], preset, d, angle, corner)
+            chip = chip or {}
+            num = lambda v: float(v) if isinstance(v, (int, float)) else float("nan")  # noqa: E731  (None: none)
             fc, ft = mean_tool_forces(d, angle)
             e = s.get("energy_J_per_m", {})
             work = e.get("external_work", float("nan"))
@@ -246,9 +290,15 @@ def main(argv):
                          "plastic_fraction": frac("plastic_work"), "damage_fraction": frac("damage_dissipation"),
                          "friction_fraction": frac("friction_work"),
                          "damage_J_per_m": e.get("damage_dissipation", float("nan")),
+                         "chip_type": chip.get("classification", ""),
+                         "chip_thickness_um": num(chip.get("mean_thickness_m")) * 1e6,
+                         "pitch_um": num(chip.get("pitch_m")) * 1e6,
+                         "segmentation_degree": num(chip.get("segmentation_degree")),
+                         "grid_row_period_um": h * 1e6 / math.sin(math.radians(angle)) if angle > 0 else float("nan"),
                          "wall_time_s": s.get("wall_time_s", float("nan"))})
     keys = ["cell_um", "angle_deg", "status", "Fc_N_per_mm", "Ft_N_per_mm", "tool_work_J_per_m", "plastic_fraction",
-            "damage_fraction", "friction_fraction", "damage_J_per_m", "wall_time_s"]
+            "damage_fraction", "friction_fraction", "damage_J_per_m", "chip_type", "chip_thickness_um", "pitch_um",
+            "segmentation_degree", "grid_row_period_um", "wall_time_s"]
     with open(os.path.join(a["out"], "grid_orientation.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=keys)
         w.writeheader()
@@ -260,14 +310,19 @@ def main(argv):
                 "Mean tool forces over the second half of the cut in the tool's frame (N/mm); the tool's work "
                 "(J/m) and its partition (fractions of it); the damage dissipation (J/m). \"preset\": the "
                 "case as the program builds it; the angles: the same scene rotated, on a base that fills the wedge "
-                "down to the grid's fixed sides.\n\n"
-                "| cell (µm) | angle (°) | status | Fc | Ft | tool work | plastic | damage | friction | damage (J/m) |\n"
-                "|---|---|---|---|---|---|---|---|---|---|\n")
+                "down to the grid's fixed sides. The chip (docs/analysis.md) from the last snapshot turned back into the "
+                "tool's frame: type, mean thickness and pitch (µm), segmentation degree; the grid-row period is the tool's "
+                "travel between two crossings of a grid row, cell / sin(angle) (µm).\n\n"
+                "| cell (µm) | angle (°) | status | Fc | Ft | tool work | plastic | damage | friction | damage (J/m) | "
+                "chip | thickness | pitch | Gs | grid-row period |\n"
+                "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n")
         for r in rows:
             f.write(f"| {r['cell_um']:g} | {r['angle_deg']} | {r['status']} | {fmt(r.get('Fc_N_per_mm'), 1)} | "
                     f"{fmt(r.get('Ft_N_per_mm'), 1)} | {fmt(r.get('tool_work_J_per_m'), 2)} | "
                     f"{fmt(r.get('plastic_fraction'), 3)} | {fmt(r.get('damage_fraction'), 3)} | "
-                    f"{fmt(r.get('friction_fraction'), 3)} | {fmt(r.get('damage_J_per_m'), 2)} |\n")
+                    f"{fmt(r.get('friction_fraction'), 3)} | {fmt(r.get('damage_J_per_m'), 2)} | "
+                    f"{r.get('chip_type') or '–'} | {fmt(r.get('chip_thickness_um'), 1)} | {fmt(r.get('pitch_um'), 1)} | "
+                    f"{fmt(r.get('segmentation_degree'), 2)} | {fmt(r.get('grid_row_period_um'), 1)} |\n")
     plot_final_chips(a["out"], list(variants_of), variants_of)
     print(f"wrote {os.path.join(a['out'], 'grid_orientation.csv')}, grid_orientation.md and grid_orientation.png")
     return 0 if all(r["status"] == "complete" for r in rows) else 1

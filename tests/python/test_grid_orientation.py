@@ -8,6 +8,11 @@ and the same scene on the study's base at 0 and 30 deg. Checks:
   sides: Fc within 3 % and Ft within 6 % of the preset's (measured 190.2 / 67.6 against 193.0 / 69.2 N/mm);
 - at 30 deg the forces, turned back into the tool's frame, are those of the same cut: Fc within 10 % and Ft within
   15 % of 0 deg's (measured +3.7 % and +0.4 %); turning them the wrong way would move Fc by about Ft (35 %);
+- every run's chip is analysed (the turned ones in the tool's frame): a chip type in every row;
+- the turn back into the tool's frame is exact: the preset's last snapshot turned by +30 deg about the workpiece's
+  corner, as rotated_scene places a turned cut, and analysed as a turned run gives the preset's own chip (type,
+  thickness, pitch, segmentation degree to 1e-6); turned back the wrong way it finds 249 particles and 433 um
+  instead of 30 and 108 um;
 - a rerun keeps the complete runs (their summary.json untouched) and writes the same table.
 """
 import csv
@@ -19,6 +24,10 @@ import sys
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from plot_checks import fail  # noqa: E402
+
+sys.path.insert(0, os.path.join(ROOT, "tools"))
+import grid_orientation_study as study  # noqa: E402
+from snapshot_transform import turn_snapshot  # noqa: E402
 
 
 def rows_of(out):
@@ -52,6 +61,32 @@ def main(binary, scratch):
              f"{ft['preset']:.1f}")
     if abs(fc["30"] / fc["0"] - 1) > 0.10 or abs(ft["30"] / ft["0"] - 1) > 0.15:
         fail(f"30 deg against 0 deg: Fc {fc['30']:.1f} / {fc['0']:.1f}, Ft {ft['30']:.1f} / {ft['0']:.1f}")
+
+    for name, r in rows.items():
+        if not r["chip_type"]:
+            fail(f"{name}: no chip analysis")
+    print("chips:", {k: (r["chip_type"], r["chip_thickness_um"], r["pitch_um"]) for k, r in rows.items()})
+
+    # The turn back, checked on the preset's own last snapshot turned as a 30 deg run would hold it.
+    preset = os.path.join(out, "preset_25um")
+    with open(os.path.join(preset, "scene.toml"), "rb") as f:
+        corner = next(b for b in study.tomllib.load(f)["body"] if b["name"] == "workpiece")["rectangle"]["min"]
+    reference = study.chip_in_tool_frame(binary, preset, preset, 0.0, (0.0, 0.0))
+    turned = os.path.join(scratch, "turned_30deg")
+    file, time = study.last_snapshot(preset)
+    os.makedirs(os.path.dirname(os.path.join(turned, file)))
+    turn_snapshot(os.path.join(preset, file), os.path.join(turned, file), 30.0, corner, (0.0, 0.0))
+    shutil.copy(os.path.join(preset, "particles.pvd"), turned)  # lists earlier snapshots too: only the last is read
+    shutil.copy(os.path.join(preset, "summary.json"), turned)
+    back = study.chip_in_tool_frame(binary, preset, turned, 30.0, corner)
+    if not reference or not back:
+        fail(f"no chip analysis: {reference!r} / {back!r}")
+    for key in ("mean_thickness_m", "pitch_m", "segmentation_degree", "peak_height_m"):
+        a, b = reference.get(key), back.get(key)
+        if (a is None) != (b is None) or (a is not None and abs(a - b) > 1e-6 * abs(a)):
+            fail(f"turned back, {key}: {b} against {a}")
+    if reference["classification"] != back["classification"]:
+        fail(f"turned back: {back['classification']} against {reference['classification']}")
 
     summary = os.path.join(out, "rotated_30deg_25um", "summary.json")
     before = os.stat(summary).st_mtime_ns
