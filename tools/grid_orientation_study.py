@@ -16,7 +16,8 @@ Writes OUT/grid_orientation.csv and OUT/grid_orientation.md: per cell size and a
 second half of the cut, the tool's work and its partition (plastic, damage, friction), the damage dissipation
 (J/m), the chip (type, thickness, pitch, segmentation degree: `mpmcut analyze` of the last snapshot turned back into
 the tool's frame, in RUN_DIR_tool_frame; tools/snapshot_transform.py), the tool's travel between two crossings of a
-grid row (cell / sin angle) and the run's status. The preset's own run with fixed grid
+grid row (cell / sin angle), the wavelength in travel and amplitude of Fc's strongest oscillation over the second half
+of the cut (are the bands paced by the grid rows?) and the run's status. The preset's own run with fixed grid
 sides (angle "preset") is listed beside them. OUT/grid_orientation.png shows every run's last snapshot turned back
 into the tool's frame, coloured by damage (with matplotlib and meshio).
 """
@@ -155,6 +156,36 @@ def mean_tool_forces(run_dir, angle_deg):
     return (fc / n, ft / n) if n else (float("nan"), float("nan"))
 
 
+def force_wavelength(run_dir, angle_deg, cell):
+    """The strongest oscillation of Fc (tool frame) over the second half of the tool's travel: its wavelength in tool
+    travel (m) and amplitude over the mean Fc, among wavelengths from 3 cells to a third of that window (a Hann-weighted
+    Fourier amplitude on the rows of rigid_forces.csv); NaN where the window is shorter than 9 cells. A cut whose bands
+    are paced by the grid oscillates at the travel between two grid-row crossings, cell / sin(angle); one paced by the
+    chip, at its segment spacing in travel, whatever the angle."""
+    c, s = math.cos(math.radians(angle_deg)), math.sin(math.radians(angle_deg))
+    with open(os.path.join(run_dir, "rigid_forces.csv"), newline="") as f:
+        rows = list(csv.DictReader(f))
+    travel = [math.hypot(float(r["tool_displacement_x_m"]), float(r["tool_displacement_y_m"])) for r in rows]
+    fc = [c * float(r["tool_force_x_N_per_m"]) + s * float(r["tool_force_y_N_per_m"]) for r in rows]
+    half = 0.5 * travel[-1]
+    pairs = [(u, f) for u, f in zip(travel, fc) if u >= half]
+    if len(pairs) < 8 or travel[-1] - half < 9 * cell:
+        return float("nan"), float("nan")
+    u0, span = pairs[0][0], pairs[-1][0] - pairs[0][0]
+    mean = sum(f for _, f in pairs) / len(pairs)
+    hann = [math.sin(math.pi * (u - u0) / span) ** 2 for u, _ in pairs]
+    best = (float("nan"), 0.0)
+    steps = 200
+    for k in range(steps + 1):
+        wavelength = 3 * cell + (span / 3 - 3 * cell) * k / steps
+        a = sum(w * (f - mean) * math.cos(2 * math.pi * u / wavelength) for w, (u, f) in zip(hann, pairs))
+        b = sum(w * (f - mean) * math.sin(2 * math.pi * u / wavelength) for w, (u, f) in zip(hann, pairs))
+        amplitude = 2 * math.hypot(a, b) / sum(hann)
+        if amplitude > best[1]:
+            best = (wavelength, amplitude)
+    return best[0], best[1] / abs(mean)
+
+
 def summary_of(run_dir):
     with open(os.path.join(run_dir, "summary.json")) as f:
         return json.load(f)
@@ -282,6 +313,7 @@ def main(argv):
             chip = chip or {}
             num = lambda v: float(v) if isinstance(v, (int, float)) else float("nan")  # noqa: E731  (None: none)
             fc, ft = mean_tool_forces(d, angle)
+            wavelength, oscillation = force_wavelength(d, angle, h)
             e = s.get("energy_J_per_m", {})
             work = e.get("external_work", float("nan"))
             frac = lambda k: e.get(k, float("nan")) / work if work else float("nan")  # noqa: E731
@@ -295,10 +327,12 @@ def main(argv):
                          "pitch_um": num(chip.get("pitch_m")) * 1e6,
                          "segmentation_degree": num(chip.get("segmentation_degree")),
                          "grid_row_period_um": h * 1e6 / math.sin(math.radians(angle)) if angle > 0 else float("nan"),
+                         "force_wavelength_um": wavelength * 1e6, "force_oscillation_percent": 100 * oscillation,
                          "wall_time_s": s.get("wall_time_s", float("nan"))})
     keys = ["cell_um", "angle_deg", "status", "Fc_N_per_mm", "Ft_N_per_mm", "tool_work_J_per_m", "plastic_fraction",
             "damage_fraction", "friction_fraction", "damage_J_per_m", "chip_type", "chip_thickness_um", "pitch_um",
-            "segmentation_degree", "grid_row_period_um", "wall_time_s"]
+            "segmentation_degree", "grid_row_period_um", "force_wavelength_um", "force_oscillation_percent",
+            "wall_time_s"]
     with open(os.path.join(a["out"], "grid_orientation.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=keys)
         w.writeheader()
@@ -312,17 +346,19 @@ def main(argv):
                 "case as the program builds it; the angles: the same scene rotated, on a base that fills the wedge "
                 "down to the grid's fixed sides. The chip (docs/analysis.md) from the last snapshot turned back into the "
                 "tool's frame: type, mean thickness and pitch (µm), segmentation degree; the grid-row period is the tool's "
-                "travel between two crossings of a grid row, cell / sin(angle) (µm).\n\n"
+                "travel between two crossings of a grid row, cell / sin(angle) (µm); the strongest oscillation of Fc "
+                "over the second half of the travel: its wavelength in travel (µm) and amplitude (% of the mean).\n\n"
                 "| cell (µm) | angle (°) | status | Fc | Ft | tool work | plastic | damage | friction | damage (J/m) | "
-                "chip | thickness | pitch | Gs | grid-row period |\n"
-                "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n")
+                "chip | thickness | pitch | Gs | grid-row period | Fc wavelength | Fc oscillation |\n"
+                "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n")
         for r in rows:
             f.write(f"| {r['cell_um']:g} | {r['angle_deg']} | {r['status']} | {fmt(r.get('Fc_N_per_mm'), 1)} | "
                     f"{fmt(r.get('Ft_N_per_mm'), 1)} | {fmt(r.get('tool_work_J_per_m'), 2)} | "
                     f"{fmt(r.get('plastic_fraction'), 3)} | {fmt(r.get('damage_fraction'), 3)} | "
                     f"{fmt(r.get('friction_fraction'), 3)} | {fmt(r.get('damage_J_per_m'), 2)} | "
                     f"{r.get('chip_type') or '–'} | {fmt(r.get('chip_thickness_um'), 1)} | {fmt(r.get('pitch_um'), 1)} | "
-                    f"{fmt(r.get('segmentation_degree'), 2)} | {fmt(r.get('grid_row_period_um'), 1)} |\n")
+                    f"{fmt(r.get('segmentation_degree'), 2)} | {fmt(r.get('grid_row_period_um'), 1)} | "
+                    f"{fmt(r.get('force_wavelength_um'), 1)} | {fmt(r.get('force_oscillation_percent'), 1)} |\n")
     plot_final_chips(a["out"], list(variants_of), variants_of)
     print(f"wrote {os.path.join(a['out'], 'grid_orientation.csv')}, grid_orientation.md and grid_orientation.png")
     return 0 if all(r["status"] == "complete" for r in rows) else 1
