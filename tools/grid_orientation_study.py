@@ -183,7 +183,7 @@ def force_wavelength(run_dir, angle_deg, cell):
         amplitude = 2 * math.hypot(a, b) / sum(hann)
         if amplitude > best[1]:
             best = (wavelength, amplitude)
-    return best[0], best[1] / abs(mean)
+    return (best[0], best[1] / abs(mean)) if mean else (float("nan"), float("nan"))
 
 
 def summary_of(run_dir):

@@ -42,11 +42,11 @@ MaterialParameters layer_material(const char* name, double strength_factor) {
 }
 
 struct Sample {
-  double gamma = 0.0;       // nominal shear, -
-  double core_gamma = 0.0;  // mean shear of the layer's core, -
-  double shear_stress = 0.0;  // Pa, mean over the middle of the layer
-  double band_width = 0.0;    // m
-  double band_centre = 0.0;   // m from the anchor, across the layer (the seed at H/2)
+  double gamma = 0.0;         // nominal shear (slip / H), -
+  double core_gamma = 0.0;    // mean shear s.F.n of the window's core, -
+  double shear_stress = 0.0;  // mean s.sigma.n of the window's core, Pa
+  double band_width = 0.0;    // plastic strain across the layer over its peak, m
+  double band_centre = 0.0;   // where that peak is, from the anchor across the layer (the seed at H/2), m
 };
 
 // The homogeneous adiabatic shear stress at the nominal shear gamma (material-point driver, simple shear).
@@ -63,6 +63,7 @@ std::vector<Sample> homogeneous_response(double gamma_end) {
   return out;
 }
 
+// The curve's shear stress at the shear gamma (linear between samples; its `gamma` is the abscissa).
 double interpolate(const std::vector<Sample>& curve, double gamma) {
   for (std::size_t k = 1; k < curve.size(); ++k)
     if (curve[k].gamma >= gamma) {
