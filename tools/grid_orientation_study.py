@@ -93,12 +93,17 @@ def rotate(p, c, s):
     return [c * p[0] - s * p[1], s * p[0] + c * p[1]]
 
 
+def workpiece_of(scene):
+    """The preset scene's workpiece body (a rectangle; the turned scenes' corner is its lower-left one)."""
+    return next(b for b in scene["body"] if b["name"] == "workpiece")
+
+
 def rotated_scene(scene, angle_deg):
     """The preset's scene rotated by angle_deg; a base of the same material fills the wedge between the workpiece's
     bottom and left sides and the grid's fixed bottom and left sides (a strip HOLD_CELLS cells thick at 0 deg)."""
     c, s = math.cos(math.radians(angle_deg)), math.sin(math.radians(angle_deg))
     h = scene["grid"]["cell_size"]
-    work = next(b for b in scene["body"] if b["name"] == "workpiece")
+    work = workpiece_of(scene)
     (x0, y0), (x1, y1) = work["rectangle"]["min"], work["rectangle"]["max"]
     a = HOLD_CELLS * h
     place = lambda p: rotate([p[0] - x0, p[1] - y0], c, s)  # noqa: E731  (about the workpiece's corner)
@@ -300,7 +305,7 @@ def main(argv):
                         "--threads", str(a["threads"])], d + ".log")
             variants.append((f"{angle:g}", d, code, angle))
         variants_of[tag] = [(name, d, angle) for name, d, code, angle in variants]
-        corner = next(b for b in scene["body"] if b["name"] == "workpiece")["rectangle"]["min"]
+        corner = workpiece_of(scene)["rectangle"]["min"]
         for name, d, code, angle in variants:
             try:
                 s = summary_of(d)

@@ -95,7 +95,7 @@ def main(binary, scratch):
     # The turn back, checked on the preset's own last snapshot turned as a 30 deg run would hold it.
     preset = os.path.join(out, "preset_25um")
     with open(os.path.join(preset, "scene.toml"), "rb") as f:
-        corner = next(b for b in study.tomllib.load(f)["body"] if b["name"] == "workpiece")["rectangle"]["min"]
+        corner = study.workpiece_of(study.tomllib.load(f))["rectangle"]["min"]
     reference = study.chip_in_tool_frame(binary, preset, preset, 0.0, (0.0, 0.0))
     turned = os.path.join(scratch, "turned_30deg")
     file, time = study.last_snapshot(preset)
