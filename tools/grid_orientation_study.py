@@ -1,7 +1,7 @@
 """Does a cut depend on how the grid is oriented? The same cut, rotated against the grid.
 
 usage: /usr/bin/python3 tools/grid_orientation_study.py MPMCUT CASE OUT [--angles 0,15,30,45] [--cells 12e-6,8e-6]
-                                                        [--threads 1] [--set KEY=VALUE ...]
+                                                        [--threads 1] [--set KEY=VALUE ...] [--lattice grid]
 
 For each cell size the cutting case is expanded by the program itself (a one-step run writes its complete
 scene.toml), and that scene is rotated by each angle about the workpiece's lower-left corner: the workpiece, the
@@ -11,6 +11,11 @@ between the workpiece's bottom and left sides and the grid's fixed bottom and le
 cells thick); the thermal sides are the preset's. The tool force (rigid_forces.csv)
 is turned back into the tool's frame: Fc along the cutting direction, Ft normal to it, per mm of width. Each variant
 is its own run directory, run with --keep-complete: a rerun keeps what is complete (the study is resumable).
+
+--lattice says where the rotated workpiece and base put their particles: `grid` (the default) on the grid's own
+sub-grid, so that a rotated side is a staircase of particle rows; `turned` on the sub-grid turned with them
+(`lattice_angle_deg` = the angle, `lattice_origin` = the workpiece's corner; docs/input.md, [[body]]), so that their
+sides run along particle rows as the unrotated workpiece's do: the same cut, only the grid turned.
 
 Writes OUT/grid_orientation.csv and OUT/grid_orientation.md: per cell size and angle, the mean Fc and Ft over the
 second half of the cut, the tool's work and its partition (plastic, damage, friction), the damage dissipation
@@ -40,7 +45,7 @@ def parse_args(argv):
     if len(argv) < 4:
         sys.exit(__doc__)
     args = {"binary": argv[1], "case": argv[2], "out": argv[3], "angles": [0.0, 15.0, 30.0, 45.0],
-            "cells": [12e-6, 8e-6], "threads": 1, "sets": []}
+            "cells": [12e-6, 8e-6], "threads": 1, "sets": [], "lattice": "grid"}
     i = 4
     while i < len(argv):
         key = argv[i]
@@ -56,6 +61,10 @@ def parse_args(argv):
                 args["threads"] = int(value)
             elif key == "--set":
                 args["sets"].append(value)
+            elif key == "--lattice":
+                if value not in ("grid", "turned"):
+                    sys.exit(f"error: --lattice {value}: must be grid or turned")
+                args["lattice"] = value
             else:
                 sys.exit(f"error: unknown option {key}\n{__doc__}")
         except ValueError:
@@ -98,9 +107,10 @@ def workpiece_of(scene):
     return next(b for b in scene["body"] if b["name"] == "workpiece")
 
 
-def rotated_scene(scene, angle_deg):
+def rotated_scene(scene, angle_deg, turned_lattice=False):
     """The preset's scene rotated by angle_deg; a base of the same material fills the wedge between the workpiece's
-    bottom and left sides and the grid's fixed bottom and left sides (a strip HOLD_CELLS cells thick at 0 deg)."""
+    bottom and left sides and the grid's fixed bottom and left sides (a strip HOLD_CELLS cells thick at 0 deg). With
+    turned_lattice, both are seeded on the particle lattice turned with them about the workpiece's corner."""
     c, s = math.cos(math.radians(angle_deg)), math.sin(math.radians(angle_deg))
     h = scene["grid"]["cell_size"]
     work = workpiece_of(scene)
@@ -130,6 +140,9 @@ def rotated_scene(scene, angle_deg):
     for m in scene["material"]:
         out.append(table("material", m, array=True))
     body = {k: v for k, v in work.items() if k != "rectangle"}
+    if turned_lattice and angle_deg != 0:
+        body["lattice_angle_deg"] = float(angle_deg)
+        body["lattice_origin"] = [0.0, 0.0]  # the workpiece's corner, which the rotation keeps at the origin
     body["polygon"] = [p0, p1, place([x1, y1]), p5]
     out.append(table("body", body, array=True))
     base_body = dict(body)
@@ -299,7 +312,7 @@ def main(argv):
             d = os.path.join(a["out"], f"rotated_{angle:g}deg_{tag}")
             case = d + ".toml"
             with open(case, "w") as f:
-                f.write(rotated_scene(scene, angle))
+                f.write(rotated_scene(scene, angle, a["lattice"] == "turned"))
             print(f"cell {tag}, {angle:g} deg ...", flush=True)
             code = run([a["binary"], "run", case, "--out", d, "--keep-complete", "--no-plots", "--no-progress",
                         "--threads", str(a["threads"])], d + ".log")
@@ -349,7 +362,10 @@ def main(argv):
                 "Mean tool forces over the second half of the cut in the tool's frame (N/mm); the tool's work "
                 "(J/m) and its partition (fractions of it); the damage dissipation (J/m). \"preset\": the "
                 "case as the program builds it; the angles: the same scene rotated, on a base that fills the wedge "
-                "down to the grid's fixed sides. The chip (docs/analysis.md) from the last snapshot turned back into the "
+                "down to the grid's fixed sides, "
+                + ("seeded on the particle lattice turned with them. " if a["lattice"] == "turned" else
+                   "seeded on the grid's own particle lattice (rotated sides in steps). ")
+                + "The chip (docs/analysis.md) from the last snapshot turned back into the "
                 "tool's frame: type, mean thickness and pitch (µm), segmentation degree; the grid-row period is the tool's "
                 "travel between two crossings of a grid row, cell / sin(angle) (µm); the strongest oscillation of Fc "
                 "over the second half of the travel: its wavelength in travel (µm) and amplitude (% of the mean).\n\n"

@@ -50,12 +50,15 @@ struct Shape {
   bool operator==(const Shape&) const = default;  // field-wise, for round-trip tests
 };
 
-// A deformable body filled with particles on a regular sub-grid of the background grid.
+// A deformable body filled with particles on a regular sub-grid of the background grid, or on that sub-grid turned
+// by lattice_angle_deg about lattice_origin (a turned body's sides then run along particle rows, not in steps).
 struct BodySpec {
   std::string name;
   Shape shape;
   std::string material;          // name of a material of the scene
   int particles_per_cell = 2;    // per direction
+  double lattice_angle_deg = 0.0;     // the particle lattice's turn against the grid, counter-clockwise
+  std::optional<Vec2> lattice_origin;  // a corner of the lattice's squares; none: the grid's min corner
   Vec2 velocity = Vec2::Zero();  // initial, m/s
   double temperature = 298.0;    // initial, K
 

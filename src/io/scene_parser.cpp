@@ -394,6 +394,9 @@ BodySpec read_body(TableReader t, const Scene& scene) {
   b.shape = read_shape(t, scene.grid);
   b.particles_per_cell =
       static_cast<int>(t.integer("particles_per_cell", b.particles_per_cell, Range::closed(1, 8, "per direction")));
+  // A lattice turned by 90 deg is the unturned one again: one quarter turn either way spans every lattice.
+  b.lattice_angle_deg = t.number("lattice_angle_deg", b.lattice_angle_deg, Range::closed(-90.0, 90.0, "deg"));
+  if (t.has("lattice_origin")) b.lattice_origin = t.vec2("lattice_origin", Vec2::Zero(), kCoordinate);
   b.velocity = t.vec2("velocity", b.velocity, kSpeedComponent);
   // Starting at the material's reference temperature means no thermal softening at rest.
   b.temperature = t.number("temperature", scene.materials[m].room_temperature, temperature_range(scene.materials[m]));

@@ -137,6 +137,9 @@ void write_scene_tables(const Scene& s, std::ostream& out) {
     out << "material = " << str(b.material) << "\n";
     out << shape_line(b.shape) << "\n";
     out << "particles_per_cell = " << b.particles_per_cell << "\n";
+    // Written only where set, so that scenes written before the keys existed stay as they were.
+    if (b.lattice_angle_deg != 0.0) out << "lattice_angle_deg = " << num(b.lattice_angle_deg) << "\n";
+    if (b.lattice_origin) out << "lattice_origin = " << vec(*b.lattice_origin) << "\n";
     out << "velocity = " << vec(b.velocity) << "\n";
     out << "temperature = " << num(b.temperature) << "\n";
   }

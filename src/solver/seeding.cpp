@@ -20,12 +20,14 @@ void seed_particles(const Scene& scene, const Grid& grid, Particles& particles) 
 }
 
 double seed_points_in_box(const BodySpec& body, double cell_size, const Vec2& lo, const Vec2& hi) {
-  const double d = cell_size / body.particles_per_cell;
+  const SeedLattice lattice(body, Vec2::Zero(), cell_size);
   Vec2 body_lo, body_hi;
   body.shape.bounds(body_lo, body_hi);
   const Vec2 extent = body_hi.cwiseMin(hi) - body_lo.cwiseMax(lo);
   if ((extent.array() < 0.0).any()) return 0.0;
-  return (extent.x() / d + 1.0) * (extent.y() / d + 1.0);
+  const double c = std::abs(lattice.cos_angle), s = std::abs(lattice.sin_angle);
+  const double along_k = c * extent.x() + s * extent.y(), along_l = s * extent.x() + c * extent.y();
+  return (along_k / lattice.spacing + 1.0) * (along_l / lattice.spacing + 1.0);
 }
 
 }  // namespace mpmcut

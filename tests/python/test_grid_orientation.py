@@ -16,7 +16,10 @@ and the same scene on the study's base at 0 and 30 deg. Checks:
 - Fc's strongest oscillation is found: on a made-up force record of a cut turned by 30 deg whose Fc oscillates by
   5 % with a wavelength of 80 um of travel (and Ft by 20 % at 50 um), the wavelength within 3 % and the amplitude
   within 10 % of 5 %;
-- a rerun keeps the complete runs (their summary.json untouched) and writes the same table.
+- a rerun keeps the complete runs (their summary.json untouched) and writes the same table;
+- with --lattice turned the 30 deg workpiece is the preset's turned: its particles at the start, turned back about
+  the corner, sit on the preset's own sub-grid squares, every one of them and no other (on the grid's lattice the
+  same check finds particles off those squares), and its forces are again within 10 % / 15 % of 0 deg's.
 """
 import csv
 import math
@@ -57,6 +60,56 @@ def check_force_wavelength(scratch):
     print(f"made-up Fc oscillation: {found * 1e6:.1f} um, {100 * amplitude:.2f} %")
     if abs(found / wavelength - 1) > 0.03 or abs(amplitude / 0.05 - 1) > 0.1:
         fail(f"Fc oscillation found at {found * 1e6:.1f} um with {100 * amplitude:.2f} % (made: 80 um, 5 %)")
+
+
+def workpiece_squares(run_dir, angle_deg, corner, spacing):
+    """The workpiece's particles in the first snapshot, turned back by angle_deg about the origin onto `corner`, as
+    sub-grid squares (k, l) counted from the corner; and the largest distance of a particle from its square's centre,
+    in spacings."""
+    import meshio
+    import numpy as np
+    with open(os.path.join(run_dir, "scene.toml"), "rb") as f:
+        names = [b["name"] for b in study.tomllib.load(f)["body"]]
+    m = meshio.read(os.path.join(run_dir, "snapshots", "particles_000000.vtu"))
+    p = m.points[m.point_data["body_id"].ravel() == names.index("workpiece"), :2]
+    c, s = math.cos(math.radians(angle_deg)), math.sin(math.radians(angle_deg))
+    if angle_deg != 0:
+        p = np.column_stack([c * p[:, 0] + s * p[:, 1], -s * p[:, 0] + c * p[:, 1]]) + np.asarray(corner)
+    u = (p - np.asarray(corner)) / spacing - 0.5
+    squares = np.rint(u)
+    return {(int(a), int(b)) for a, b in squares}, float(np.abs(u - squares).max()), len(p)
+
+
+def check_turned_lattice(binary, scratch, grid_lattice_out):
+    out = os.path.join(scratch, "study_turned")
+    cmd = ["/usr/bin/python3", os.path.join(ROOT, "tools", "grid_orientation_study.py"), binary,
+           os.path.join(ROOT, "tests", "support", "cases", "tiny_cut.toml"), out, "--cells", "25e-6", "--angles",
+           "0,30", "--lattice", "turned"]
+    p = subprocess.run(cmd, capture_output=True, text=True, timeout=600)
+    print(p.stdout, p.stderr, sep="\n")
+    if p.returncode != 0:
+        fail(f"grid_orientation_study.py --lattice turned exit status {p.returncode}")
+    with open(os.path.join(out, "preset_25um", "scene.toml"), "rb") as f:
+        work = study.workpiece_of(study.tomllib.load(f))
+    corner = work["rectangle"]["min"]
+    spacing = 25e-6 / work["particles_per_cell"]
+    preset, off, n = workpiece_squares(os.path.join(out, "preset_25um"), 0.0, corner, spacing)
+    turned, off_turned, n_turned = workpiece_squares(os.path.join(out, "rotated_30deg_25um"), 30.0, corner, spacing)
+    print(f"turned lattice: {n_turned} workpiece particles, {off_turned:.2e} spacings off their squares "
+          f"(preset {n}, {off:.2e})")
+    if n_turned != n or turned != preset or off_turned > 1e-6:
+        fail(f"turned lattice: {n_turned} particles ({n} in the preset), {len(turned ^ preset)} squares differ, "
+             f"{off_turned:.2e} spacings off")
+    _, off_grid, _ = workpiece_squares(os.path.join(grid_lattice_out, "rotated_30deg_25um"), 30.0, corner, spacing)
+    if off_grid < 0.1:
+        fail(f"the grid's lattice turned back sits on the squares too ({off_grid:.2e} spacings off): no check")
+    rows = rows_of(out)
+    fc = {k: float(r["Fc_N_per_mm"]) for k, r in rows.items()}
+    ft = {k: float(r["Ft_N_per_mm"]) for k, r in rows.items()}
+    print(f"turned lattice Fc: {fc}\nFt: {ft}")
+    if abs(fc["30"] / fc["0"] - 1) > 0.10 or abs(ft["30"] / ft["0"] - 1) > 0.15:
+        fail(f"turned lattice, 30 deg against 0 deg: Fc {fc['30']:.1f} / {fc['0']:.1f}, Ft {ft['30']:.1f} / "
+             f"{ft['0']:.1f}")
 
 
 def main(binary, scratch):
@@ -122,6 +175,7 @@ def main(binary, scratch):
         fail("the rerun ran the complete 30 deg run again")
     if rows_of(out) != rows:
         fail("the rerun's table differs")
+    check_turned_lattice(binary, scratch, out)
     print("OK")
 
 

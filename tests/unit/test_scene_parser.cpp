@@ -308,6 +308,21 @@ TEST(SceneValidation, ParticlesPerCellOutOfRange) {
                {"must be an integer", "got 2.5"});
 }
 
+// The lattice keys are bounded, and the check that a body gets particles looks at its own lattice: a square 0.04
+// across between two rows of the grid's sub-grid (spacing 0.05) holds none of its points, but moved onto the square
+// the lattice puts one in it.
+TEST(SceneValidation, LatticeKeysAreBoundedAndTheSeedChecksSeeTheBodysLattice) {
+  expect_error(edit("rectangle =", "lattice_angle_deg = 95.0\nrectangle ="), "lattice_angle_deg",
+               {"key 'body[0].lattice_angle_deg'", "must be in [-90, 90] deg, got 95"});
+  expect_error(edit("rectangle =", "lattice_origin = [0.0, 2000.0]\nrectangle ="), "lattice_origin",
+               {"key 'body[0].lattice_origin'", "2000"});
+  const std::string sliver = "[[body]]\nname = \"s\"\nmaterial = \"m\"\n"
+                             "rectangle = { min = [0.53, 0.53], max = [0.57, 0.57] }\n";
+  expect_error(kBase + sliver, "rectangle = { min = [0.53", {"body \"s\" gets no particle"});
+  EXPECT_EQ(error_of(kBase + sliver + "lattice_origin = [0.53, 0.53]\n"), "");
+  EXPECT_EQ(error_of(kBase + sliver + "lattice_origin = [0.53, 0.53]\nlattice_angle_deg = 30.0\n"), "");
+}
+
 TEST(SceneValidation, UnknownKeysSuggestTheClosest) {
   expect_error(edit("end_time = 1.0", "end_time = 1.0\ncfll = 0.3"), "cfll",
                {"key 'solver.cfll'", "unknown key", "did you mean 'cfl'?"});
@@ -712,6 +727,8 @@ name = "tri"
 material = "ti"
 polygon = [[0.5, 0.5], [0.9, 0.5], [0.7, 0.9]]
 particles_per_cell = 3
+lattice_angle_deg = 12.5
+lattice_origin = [0.5, 0.5]
 velocity = [0.1, -0.3]
 temperature = 500.0
 

@@ -152,10 +152,6 @@ std::vector<Sample> sheared_layer(double theta_deg, VolumetricAverage average, d
     // it follow): the slip rate stays v0 while the layer's stress peaks and falls.
     for (std::size_t p = 0; p < P.size(); ++p)
       if (P.material[p] == kHeavy) P.velocity[p] = (P.position[p] - o).dot(n) > mid ? Vec2(v0 * s) : Vec2::Zero();
-    // The blocks are held to their velocities (their mass, 1e4 times the layer's, makes the nodes they share with
-    // it follow): the slip rate stays v0 while the layer's stress peaks and falls.
-    for (std::size_t p = 0; p < P.size(); ++p)
-      if (P.material[p] == kHeavy) P.velocity[p] = (P.position[p] - o).dot(n) > mid ? Vec2(v0 * s) : Vec2::Zero();
   }
   return out;
 }
