@@ -46,6 +46,16 @@ inline BodySpec inclined_strip(const std::string& name, const std::string& mater
   return b;
 }
 
+// Every body of the scene seeded on the particle lattice turned by angle_deg about `origin` (docs/input.md,
+// [[body]] lattice_angle_deg): strips built with inclined_strip at that angle about that origin, with their sides a
+// whole number of spacings from it, then have their sides half a spacing outside their outer rows, as unturned.
+inline void seed_on_turned_lattice(Scene& scene, double angle_deg, const Vec2& origin) {
+  for (BodySpec& b : scene.bodies) {
+    b.lattice_angle_deg = angle_deg;
+    b.lattice_origin = origin;
+  }
+}
+
 inline BodySpec disk_body(const std::string& name, const std::string& material, Vec2 center, double radius, int ppc,
                           Vec2 velocity) {
   BodySpec b;
