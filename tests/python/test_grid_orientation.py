@@ -80,15 +80,40 @@ def workpiece_squares(run_dir, angle_deg, corner, spacing):
     return {(int(a), int(b)) for a, b in squares}, float(np.abs(u - squares).max()), len(p)
 
 
-def check_turned_lattice(binary, scratch, grid_lattice_out):
-    out = os.path.join(scratch, "study_turned")
-    cmd = ["/usr/bin/python3", os.path.join(ROOT, "tools", "grid_orientation_study.py"), binary,
-           os.path.join(ROOT, "tests", "support", "cases", "tiny_cut.toml"), out, "--cells", "25e-6", "--angles",
-           "0,30", "--lattice", "turned"]
+def study_command(binary, out, *options):
+    return ["/usr/bin/python3", os.path.join(ROOT, "tools", "grid_orientation_study.py"), binary,
+            os.path.join(ROOT, "tests", "support", "cases", "tiny_cut.toml"), out, "--cells", "25e-6", "--angles", "0,30",
+            *options]
+
+
+def run_study(cmd):
+    """Runs the study; its rows, every one complete, with the preset and both angles."""
     p = subprocess.run(cmd, capture_output=True, text=True, timeout=600)
     print(p.stdout, p.stderr, sep="\n")
     if p.returncode != 0:
-        fail(f"grid_orientation_study.py --lattice turned exit status {p.returncode}")
+        fail(f"{' '.join(cmd[2:])}: exit status {p.returncode}")
+    rows = rows_of(cmd[4])
+    if sorted(rows) != ["0", "30", "preset"]:
+        fail(f"grid_orientation.csv rows: {sorted(rows)}")
+    for name, r in rows.items():
+        if r["status"] != "complete":
+            fail(f"{name}: status {r['status']}")
+    return rows
+
+
+def check_turned_forces(rows, what):
+    """Fc and Ft of the 30 deg cut within 10 % and 15 % of 0 deg's; the forces by row."""
+    fc = {k: float(r["Fc_N_per_mm"]) for k, r in rows.items()}
+    ft = {k: float(r["Ft_N_per_mm"]) for k, r in rows.items()}
+    print(f"{what} Fc: {fc}\nFt: {ft}")
+    if abs(fc["30"] / fc["0"] - 1) > 0.10 or abs(ft["30"] / ft["0"] - 1) > 0.15:
+        fail(f"{what}, 30 deg against 0 deg: Fc {fc['30']:.1f} / {fc['0']:.1f}, Ft {ft['30']:.1f} / {ft['0']:.1f}")
+    return fc, ft
+
+
+def check_turned_lattice(binary, scratch, grid_lattice_out):
+    out = os.path.join(scratch, "study_turned")
+    rows = run_study(study_command(binary, out, "--lattice", "turned"))
     with open(os.path.join(out, "preset_25um", "scene.toml"), "rb") as f:
         work = study.workpiece_of(study.tomllib.load(f))
     corner = work["rectangle"]["min"]
@@ -103,13 +128,7 @@ def check_turned_lattice(binary, scratch, grid_lattice_out):
     _, off_grid, _ = workpiece_squares(os.path.join(grid_lattice_out, "rotated_30deg_25um"), 30.0, corner, spacing)
     if off_grid < 0.1:
         fail(f"the grid's lattice turned back sits on the squares too ({off_grid:.2e} spacings off): no check")
-    rows = rows_of(out)
-    fc = {k: float(r["Fc_N_per_mm"]) for k, r in rows.items()}
-    ft = {k: float(r["Ft_N_per_mm"]) for k, r in rows.items()}
-    print(f"turned lattice Fc: {fc}\nFt: {ft}")
-    if abs(fc["30"] / fc["0"] - 1) > 0.10 or abs(ft["30"] / ft["0"] - 1) > 0.15:
-        fail(f"turned lattice, 30 deg against 0 deg: Fc {fc['30']:.1f} / {fc['0']:.1f}, Ft {ft['30']:.1f} / "
-             f"{ft['0']:.1f}")
+    check_turned_forces(rows, "turned lattice")
 
 
 def main(binary, scratch):
@@ -117,28 +136,14 @@ def main(binary, scratch):
     os.makedirs(scratch)
     check_force_wavelength(scratch)
     out = os.path.join(scratch, "study")
-    cmd = ["/usr/bin/python3", os.path.join(ROOT, "tools", "grid_orientation_study.py"), binary,
-           os.path.join(ROOT, "tests", "support", "cases", "tiny_cut.toml"), out, "--cells", "25e-6", "--angles", "0,30"]
-    p = subprocess.run(cmd, capture_output=True, text=True, timeout=600)
-    print(p.stdout, p.stderr, sep="\n")
-    if p.returncode != 0:
-        fail(f"grid_orientation_study.py exit status {p.returncode}")
-    rows = rows_of(out)
-    if sorted(rows) != ["0", "30", "preset"]:
-        fail(f"grid_orientation.csv rows: {sorted(rows)}")
-    for name, r in rows.items():
-        if r["status"] != "complete":
-            fail(f"{name}: status {r['status']}")
+    cmd = study_command(binary, out)
+    rows = run_study(cmd)
     if not os.path.isfile(os.path.join(out, "grid_orientation.md")):
         fail("grid_orientation.md missing")
-    fc = {k: float(r["Fc_N_per_mm"]) for k, r in rows.items()}
-    ft = {k: float(r["Ft_N_per_mm"]) for k, r in rows.items()}
-    print(f"Fc: {fc}\nFt: {ft}")
+    fc, ft = check_turned_forces(rows, "grid lattice")
     if abs(fc["0"] / fc["preset"] - 1) > 0.03 or abs(ft["0"] / ft["preset"] - 1) > 0.06:
         fail(f"0 deg on the base against the preset: Fc {fc['0']:.1f} / {fc['preset']:.1f}, Ft {ft['0']:.1f} / "
              f"{ft['preset']:.1f}")
-    if abs(fc["30"] / fc["0"] - 1) > 0.10 or abs(ft["30"] / ft["0"] - 1) > 0.15:
-        fail(f"30 deg against 0 deg: Fc {fc['30']:.1f} / {fc['0']:.1f}, Ft {ft['30']:.1f} / {ft['0']:.1f}")
 
     for name, r in rows.items():
         if not r["chip_type"]:
