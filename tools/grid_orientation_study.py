@@ -2,6 +2,7 @@
 
 usage: /usr/bin/python3 tools/grid_orientation_study.py MPMCUT CASE OUT [--angles 0,15,30,45] [--cells 12e-6,8e-6]
                                                         [--threads 1] [--set KEY=VALUE ...] [--lattice grid]
+                                                        [--phase 0]
 
 For each cell size the cutting case is expanded by the program itself (a one-step run writes its complete
 scene.toml), and that scene is rotated by each angle about the workpiece's lower-left corner: the workpiece, the
@@ -16,6 +17,12 @@ is its own run directory, run with --keep-complete: a rerun keeps what is comple
 sub-grid, so that a rotated side is a staircase of particle rows; `turned` on the sub-grid turned with them
 (`lattice_angle_deg` = the angle, `lattice_origin` = the workpiece's corner; docs/input.md, [[body]]), so that their
 sides run along particle rows as the unrotated workpiece's do: the same cut, only the grid turned.
+
+--phase φ (0 <= φ < 1) moves the grid down by φ cells under the same particles (their lattice stays on the
+workpiece's corner, `lattice_origin`): the tool's tip, on a node row in the preset, then sits φ of a cell above one
+(docs/cutting.md, "Grid phase of the tool tip"). A turned cut sweeps every phase as it travels (the tip crosses a
+node row every cell / sin angle); at 0 deg this gives the phases one at a time, to compare a turned cut with the
+aligned cut's average over them.
 
 Writes OUT/grid_orientation.csv and OUT/grid_orientation.md: per cell size and angle, the mean Fc and Ft over the
 second half of the cut, the tool's work and its partition (plastic, damage, friction), the damage dissipation
@@ -45,7 +52,7 @@ def parse_args(argv):
     if len(argv) < 4:
         sys.exit(__doc__)
     args = {"binary": argv[1], "case": argv[2], "out": argv[3], "angles": [0.0, 15.0, 30.0, 45.0],
-            "cells": [12e-6, 8e-6], "threads": 1, "sets": [], "lattice": "grid"}
+            "cells": [12e-6, 8e-6], "threads": 1, "sets": [], "lattice": "grid", "phase": 0.0}
     i = 4
     while i < len(argv):
         key = argv[i]
@@ -61,6 +68,10 @@ def parse_args(argv):
                 args["threads"] = int(value)
             elif key == "--set":
                 args["sets"].append(value)
+            elif key == "--phase":
+                args["phase"] = float(value)
+                if not 0 <= args["phase"] < 1:
+                    sys.exit(f"error: --phase {value}: must be in [0, 1) cells")
             elif key == "--lattice":
                 if value not in ("grid", "turned"):
                     sys.exit(f"error: --lattice {value}: must be grid or turned")
@@ -107,10 +118,11 @@ def workpiece_of(scene):
     return next(b for b in scene["body"] if b["name"] == "workpiece")
 
 
-def rotated_scene(scene, angle_deg, turned_lattice=False):
+def rotated_scene(scene, angle_deg, turned_lattice=False, phase=0.0):
     """The preset's scene rotated by angle_deg; a base of the same material fills the wedge between the workpiece's
     bottom and left sides and the grid's fixed bottom and left sides (a strip HOLD_CELLS cells thick at 0 deg). With
-    turned_lattice, both are seeded on the particle lattice turned with them about the workpiece's corner."""
+    turned_lattice, both are seeded on the particle lattice turned with them about the workpiece's corner; phase
+    moves the grid down by that fraction of a cell under the same particles."""
     c, s = math.cos(math.radians(angle_deg)), math.sin(math.radians(angle_deg))
     h = scene["grid"]["cell_size"]
     work = workpiece_of(scene)
@@ -120,7 +132,7 @@ def rotated_scene(scene, angle_deg, turned_lattice=False):
     p0, p1, p5 = place([x0, y0]), place([x1, y0]), place([x0, y1])
     # The grid's lower-left corner: whole cells below and left of the base (its fixed sides hold the base).
     left = math.floor((min(p0[0], p5[0]) - a) / h) * h
-    bottom = math.floor((min(p0[1], p1[1]) - a) / h) * h
+    bottom = math.floor((min(p0[1], p1[1]) - a) / h) * h - phase * h
     base = [p0, p1, [p1[0], bottom], [left, bottom], [left, p5[1]], p5]
     (g0x, g0y), (g1x, g1y) = scene["grid"]["min"], scene["grid"]["max"]
     pts = [place(p) for p in ([g0x, g0y], [g1x, g0y], [g1x, g1y], [g0x, g1y])]
@@ -142,6 +154,7 @@ def rotated_scene(scene, angle_deg, turned_lattice=False):
     body = {k: v for k, v in work.items() if k != "rectangle"}
     if turned_lattice and angle_deg != 0:
         body["lattice_angle_deg"] = float(angle_deg)
+    if (turned_lattice and angle_deg != 0) or phase != 0:
         body["lattice_origin"] = [0.0, 0.0]  # the workpiece's corner, which the rotation keeps at the origin
     body["polygon"] = [p0, p1, place([x1, y1]), p5]
     out.append(table("body", body, array=True))
@@ -312,7 +325,7 @@ def main(argv):
             d = os.path.join(a["out"], f"rotated_{angle:g}deg_{tag}")
             case = d + ".toml"
             with open(case, "w") as f:
-                f.write(rotated_scene(scene, angle, a["lattice"] == "turned"))
+                f.write(rotated_scene(scene, angle, a["lattice"] == "turned", a["phase"]))
             print(f"cell {tag}, {angle:g} deg ...", flush=True)
             code = run([a["binary"], "run", case, "--out", d, "--keep-complete", "--no-plots", "--no-progress",
                         "--threads", str(a["threads"])], d + ".log")
@@ -365,6 +378,7 @@ def main(argv):
                 "down to the grid's fixed sides, "
                 + ("seeded on the particle lattice turned with them. " if a["lattice"] == "turned" else
                    "seeded on the grid's own particle lattice (rotated sides in steps). ")
+                + (f"The grid moved down by {a['phase']:g} cell under the particles (--phase). " if a["phase"] else "")
                 + "The chip (docs/analysis.md) from the last snapshot turned back into the "
                 "tool's frame: type, mean thickness and pitch (µm), segmentation degree; the grid-row period is the tool's "
                 "travel between two crossings of a grid row, cell / sin(angle) (µm); the strongest oscillation of Fc "

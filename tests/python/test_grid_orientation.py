@@ -19,7 +19,10 @@ and the same scene on the study's base at 0 and 30 deg. Checks:
 - a rerun keeps the complete runs (their summary.json untouched) and writes the same table;
 - with --lattice turned the 30 deg workpiece is the preset's turned: its particles at the start, turned back about
   the corner, sit on the preset's own sub-grid squares, every one of them and no other (on the grid's lattice the
-  same check finds particles off those squares), and its forces are again within 10 % / 15 % of 0 deg's.
+  same check finds particles off those squares), and its forces are again within 10 % / 15 % of 0 deg's;
+- with --phase 0.25 the 0 deg cut's grid lies a quarter cell lower (its node rows a quarter cell off the tool's
+  tip) under the same workpiece particles (a quarter cell is half a particle spacing: particles seeded on the grid's
+  own lattice would have moved onto the squares' sides).
 """
 import csv
 import math
@@ -86,14 +89,14 @@ def study_command(binary, out, *options):
             *options]
 
 
-def run_study(cmd):
-    """Runs the study; its rows, every one complete, with the preset and both angles."""
+def run_study(cmd, names=("0", "30", "preset")):
+    """Runs the study; its rows, every one complete, named `names` (the preset and the angles)."""
     p = subprocess.run(cmd, capture_output=True, text=True, timeout=600)
     print(p.stdout, p.stderr, sep="\n")
     if p.returncode != 0:
         fail(f"{' '.join(cmd[2:])}: exit status {p.returncode}")
     rows = rows_of(cmd[4])
-    if sorted(rows) != ["0", "30", "preset"]:
+    if sorted(rows) != sorted(names):
         fail(f"grid_orientation.csv rows: {sorted(rows)}")
     for name, r in rows.items():
         if r["status"] != "complete":
@@ -129,6 +132,27 @@ def check_turned_lattice(binary, scratch, grid_lattice_out):
     if off_grid < 0.1:
         fail(f"the grid's lattice turned back sits on the squares too ({off_grid:.2e} spacings off): no check")
     check_turned_forces(rows, "turned lattice")
+
+
+def check_phase(binary, scratch, phase_0_out):
+    out = os.path.join(scratch, "study_phase")
+    run_study(study_command(binary, out, "--angles", "0", "--phase", "0.25"), ("0", "preset"))
+    grid_min = {}
+    for name, d in (("phase 0", phase_0_out), ("phase 0.25", out)):
+        with open(os.path.join(d, "rotated_0deg_25um", "scene.toml"), "rb") as f:
+            grid_min[name] = study.tomllib.load(f)["grid"]["min"]
+    shift = [(a - b) / 25e-6 for a, b in zip(grid_min["phase 0"], grid_min["phase 0.25"])]
+    print(f"--phase 0.25 moved the grid by {shift} cells")
+    if abs(shift[0]) > 1e-9 or abs(shift[1] - 0.25) > 1e-9:
+        fail(f"--phase 0.25 moved the grid by {shift} cells, not [0, 0.25]")
+    with open(os.path.join(out, "preset_25um", "scene.toml"), "rb") as f:
+        work = study.workpiece_of(study.tomllib.load(f))
+    corner, spacing = work["rectangle"]["min"], 25e-6 / work["particles_per_cell"]
+    squares = {name: workpiece_squares(os.path.join(d, "rotated_0deg_25um"), 0.0, corner, spacing)
+               for name, d in (("phase 0", phase_0_out), ("phase 0.25", out))}
+    if squares["phase 0.25"][0] != squares["phase 0"][0] or squares["phase 0.25"][1] > 1e-6:
+        fail(f"--phase 0.25 moved the workpiece's particles: {squares['phase 0.25'][2]} particles, "
+             f"{squares['phase 0.25'][1]:.2e} spacings off their squares")
 
 
 def main(binary, scratch):
@@ -181,6 +205,7 @@ def main(binary, scratch):
     if rows_of(out) != rows:
         fail("the rerun's table differs")
     check_turned_lattice(binary, scratch, out)
+    check_phase(binary, scratch, out)
     print("OK")
 
 
