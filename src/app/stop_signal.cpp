@@ -32,7 +32,10 @@ extern "C" void on_stop_signal(int signal_number) {
     const pid_t target = child.load();
     if (target != 0) ::kill(target, SIGTERM);
   }
-  say("\ninterrupted: stopped by a signal (exit code 130)\n");
+  // After a run has completed (its loop over, the program on its way out) the results are whole: say so.
+  say(g_stop.results_complete()
+          ? "\ninterrupted after the run completed: results complete, pictures not drawn (exit code 130)\n"
+          : "\ninterrupted: stopped by a signal (exit code 130)\n");
   ::_exit(kExitOnStop);
 }
 

@@ -262,6 +262,7 @@ int CaseRun::finish() {
       status_, sim_.particles().size(), sim_.step_count(), sim_.time(), wall_s,
       wall_s > 0 ? sim_.particles().size() * static_cast<double>(sim_.step_count()) / wall_s : 0.0, root_.string());
   lock_.release();  // the directory's files are final: another run (a rerun with --force) may take it
+  if (exit_code_ == kExitComplete) stop_->mark_results_complete();
   return exit_code_;
 }
 

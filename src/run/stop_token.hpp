@@ -22,6 +22,10 @@ class StopToken {
   bool stop_requested() const noexcept { return requests_.load() > 0; }
   // The signal of the request, 0 when none came by a signal.
   int signal_number() const noexcept { return signal_.load(); }
+  // Set by the run loop's owner once its results are final and complete (summary written), before the loop's scope
+  // ends: a signal after that, which exits at once, interrupts nothing but what follows, and says so.
+  void mark_results_complete() noexcept { results_complete_ = true; }
+  bool results_complete() const noexcept { return results_complete_.load(); }
 
   // The span of one run loop: requests made before it began are forgotten (the command line has
   // already exited on them), and requests during it stop it cleanly.
@@ -30,6 +34,7 @@ class StopToken {
     explicit LoopScope(StopToken& token) : token_(token) {
       token_.requests_ = 0;
       token_.signal_ = 0;
+      token_.results_complete_ = false;
       token_.running_ = true;
     }
     ~LoopScope() { token_.running_ = false; }
@@ -44,6 +49,7 @@ class StopToken {
   std::atomic<int> requests_{0};
   std::atomic<int> signal_{0};
   std::atomic<bool> running_{false};
+  std::atomic<bool> results_complete_{false};
 };
 
 }  // namespace mpmcut

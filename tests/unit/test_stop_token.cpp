@@ -25,6 +25,20 @@ TEST(StopToken, FirstRequestInALoopStopsItCleanly) {
   EXPECT_FALSE(token.request_stop());  // after the loop: exit at once
 }
 
+// A run that completed says so to a signal after its loop (the handler exits at once, but the results are whole);
+// the next loop starts without it.
+TEST(StopToken, CompletedResultsAreKnownAfterTheLoopUntilTheNextOne) {
+  StopToken token;
+  EXPECT_FALSE(token.results_complete());
+  {
+    const StopToken::LoopScope loop(token);
+    token.mark_results_complete();
+  }
+  EXPECT_TRUE(token.results_complete());
+  const StopToken::LoopScope next(token);
+  EXPECT_FALSE(token.results_complete());
+}
+
 TEST(RepeatedSignalFilter, ASignalWithinTheWindowIsTheSameStop) {
   RepeatedSignalFilter filter;
   EXPECT_TRUE(filter.is_new_stop());
