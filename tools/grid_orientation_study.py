@@ -152,9 +152,10 @@ def rotated_scene(scene, angle_deg, turned_lattice=False, phase=0.0):
     for m in scene["material"]:
         out.append(table("material", m, array=True))
     body = {k: v for k, v in work.items() if k != "rectangle"}
-    if turned_lattice and angle_deg != 0:
+    turned = turned_lattice and angle_deg != 0
+    if turned:
         body["lattice_angle_deg"] = float(angle_deg)
-    if (turned_lattice and angle_deg != 0) or phase != 0:
+    if turned or phase != 0:
         body["lattice_origin"] = [0.0, 0.0]  # the workpiece's corner, which the rotation keeps at the origin
     body["polygon"] = [p0, p1, place([x1, y1]), p5]
     out.append(table("body", body, array=True))
@@ -169,20 +170,32 @@ def rotated_scene(scene, angle_deg, turned_lattice=False, phase=0.0):
     return "\n".join(out)
 
 
-def mean_tool_forces(run_dir, angle_deg):
-    """Mean Fc, Ft (N/mm) over the second half of the tool travel, in the tool's frame."""
+def tool_frame_record(run_dir, angle_deg):
+    """The rows of rigid_forces.csv in the tool's frame of a cut turned by angle_deg: (time s, tool travel m,
+    Fc N/m along the cutting direction, Ft N/m normal to it)."""
     c, s = math.cos(math.radians(angle_deg)), math.sin(math.radians(angle_deg))
     with open(os.path.join(run_dir, "rigid_forces.csv"), newline="") as f:
         rows = list(csv.DictReader(f))
-    end = float(rows[-1]["time_s"])
+    record = []
+    for r in rows:
+        fx, fy = float(r["tool_force_x_N_per_m"]), float(r["tool_force_y_N_per_m"])
+        record.append((float(r["time_s"]),
+                       math.hypot(float(r["tool_displacement_x_m"]), float(r["tool_displacement_y_m"])),
+                       c * fx + s * fy, -s * fx + c * fy))
+    return record
+
+
+def mean_tool_forces(run_dir, angle_deg):
+    """Mean Fc, Ft (N/mm) over the second half of the tool travel, in the tool's frame."""
+    record = tool_frame_record(run_dir, angle_deg)
+    end = record[-1][0]
     fc = ft = 0.0
     n = 0
-    for r in rows:
-        if float(r["time_s"]) < 0.5 * end:
+    for time, _, f_c, f_t in record:
+        if time < 0.5 * end:
             continue
-        fx, fy = float(r["tool_force_x_N_per_m"]), float(r["tool_force_y_N_per_m"])
-        fc += (c * fx + s * fy) / 1000.0
-        ft += (-s * fx + c * fy) / 1000.0
+        fc += f_c / 1000.0
+        ft += f_t / 1000.0
         n += 1
     return (fc / n, ft / n) if n else (float("nan"), float("nan"))
 
@@ -193,11 +206,9 @@ def force_wavelength(run_dir, angle_deg, cell):
     Fourier amplitude on the rows of rigid_forces.csv); NaN where the window is shorter than 9 cells. A cut whose bands
     are paced by the grid oscillates at the travel between two grid-row crossings, cell / sin(angle); one paced by the
     chip, at its segment spacing in travel, whatever the angle."""
-    c, s = math.cos(math.radians(angle_deg)), math.sin(math.radians(angle_deg))
-    with open(os.path.join(run_dir, "rigid_forces.csv"), newline="") as f:
-        rows = list(csv.DictReader(f))
-    travel = [math.hypot(float(r["tool_displacement_x_m"]), float(r["tool_displacement_y_m"])) for r in rows]
-    fc = [c * float(r["tool_force_x_N_per_m"]) + s * float(r["tool_force_y_N_per_m"]) for r in rows]
+    record = tool_frame_record(run_dir, angle_deg)
+    travel = [u for _, u, _, _ in record]
+    fc = [f_c for _, _, f_c, _ in record]
     half = 0.5 * travel[-1]
     pairs = [(u, f) for u, f in zip(travel, fc) if u >= half]
     if len(pairs) < 8 or travel[-1] - half < 9 * cell:

@@ -51,8 +51,8 @@ struct SeedLattice {
   SeedLattice(const BodySpec& body, const Vec2& domain_min, double cell_size)
       : origin(body.lattice_origin.value_or(domain_min)), spacing(cell_size / body.particles_per_cell) {
     const double turn = body.lattice_angle_deg * (std::acos(-1.0) / 180.0);
-    cos_angle = body.lattice_angle_deg == 0.0 ? 1.0 : std::cos(turn);
-    sin_angle = body.lattice_angle_deg == 0.0 ? 0.0 : std::sin(turn);
+    cos_angle = std::cos(turn);  // exactly 1 and 0 unturned
+    sin_angle = std::sin(turn);
   }
   Vec2 position(double k, double l) const {
     return origin + spacing * Vec2(cos_angle * k - sin_angle * l, sin_angle * k + cos_angle * l);
