@@ -78,7 +78,6 @@ TextTable by_condition_table(const std::vector<const Condition*>& compared) {
   // Measurements with the tool's angles: a column for them.
   const bool tools = std::any_of(compared.begin(), compared.end(), [](const Condition* c) { return !tool_text(*c).empty(); });
   if (tools) t.headings.insert(t.headings.begin() + 3, "tool");
-  t.columns = t.headings;
   const auto pair = [](double measured, std::optional<double> simulated, const char* format) {
     return fmt::format(fmt::runtime(format), measured) + " / " +
            (simulated ? fmt::format(fmt::runtime(format), *simulated) : std::string("–"));

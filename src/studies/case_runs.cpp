@@ -365,7 +365,7 @@ void TextTable::write_csv(const fs::path& file) const {
 }
 
 std::string TextTable::markdown() const {
-  const auto& head = headings.size() == columns.size() ? headings : columns;
+  const auto& head = headings.empty() ? columns : headings;
   std::string out = "|";
   for (const auto& h : head) out += " " + h + " |";
   out += "\n|";

@@ -74,8 +74,8 @@ CaseResult read_case_result(const std::filesystem::path& dir, const std::filesys
 
 // A table of text cells written as CSV (cells with commas or quotes quoted) and as Markdown.
 struct TextTable {
-  std::vector<std::string> columns;               // CSV header: machine names with units
-  std::vector<std::string> headings;              // Markdown header: for people (same count)
+  std::vector<std::string> columns;               // CSV header: machine names with units (write_csv)
+  std::vector<std::string> headings;              // Markdown header: for people (markdown; empty: the columns)
   std::vector<std::vector<std::string>> rows;
   void write_csv(const std::filesystem::path& file) const;
   std::string markdown() const;
