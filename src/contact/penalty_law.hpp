@@ -21,7 +21,8 @@ struct PenaltyContactForce {
 };
 
 // overlap: how far the particle's domain reaches into the body, m (its half-width minus the signed
-// distance of its centre; <= 0: no contact). rel: the particle's velocity relative to the body's, m/s.
+// distance of its centre; <= 0: no contact). rel: the material's velocity at the particle relative to the
+// body's, m/s (the solver passes the grid's velocity there, not the particle's own: rigid_contact.cpp).
 // normal: the body's unit outward normal at the particle. mass: the particle's inertial mass, kg/m.
 // previous_friction: the friction force of its last step (zero when it was out of contact).
 // spring_dt: the step that sets the springs (0: dt). The solver passes its stable step, so that k does not jump on

@@ -79,6 +79,7 @@ class RigidContact {
   // particle whose domain reaches into a rigid body, spread onto the grid's force by the particle's
   // weights; the reaction on the body, its work, the frictional work (on grid.friction_heat) and one
   // record per particle in contact; each particle's contact_friction_force carries its stick history.
+  // The slip is the grid's P2G velocity at the particle relative to the body (grid.velocity must hold it).
   // stable_dt: the step's stable (CFL) step, which sets the springs' stiffness (penalty_law.hpp), dt <= stable_dt.
   void apply_penalty(Particles& particles, Grid& grid, std::span<const ShapeFunction> body_shapes,
                      double inertia_factor, double dt, double stable_dt, std::vector<RigidBodyState>& bodies,

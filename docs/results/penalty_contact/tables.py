@@ -10,7 +10,10 @@ The cell-period amplitude and the window's frictional work come from tools/force
 own steady window. Node detection's earlier runs of the same condition are drawn beside them as references:
 docs/results/grid_phase/phase_experiment.csv (t0/10, four phases) and docs/results/convergence/klippel_100m_min/
 sweep.csv (t0/8 to t0/24, phase 0).
-Run: /usr/bin/python3 docs/results/penalty_contact/tables.py
+Run: /usr/bin/python3 docs/results/penalty_contact/tables.py [RECORDS STEM]
+RECORDS (default records) is the folder of runs beside this script, STEM (default penalty_contact) the name of the
+three files written. With records_grid_slip / penalty_contact_grid_slip (the penalty friction taking its slip from
+the grid's velocity, since 2026-12-07) the plot also draws the runs of records/ (the particle's slip) in grey.
 """
 import csv
 import json
@@ -84,10 +87,24 @@ def node_references():
     return sorted(phase), sorted(conv)
 
 
-def main():
-    rows = [r for r in (row(d) for d in sorted((here / "records").iterdir()) if (d / "summary.json").exists()) if r]
+def read_rows(records):
+    rows = [r for r in (row(d) for d in sorted((here / records).iterdir()) if (d / "summary.json").exists()) if r]
     rows.sort(key=lambda r: (r["contact_detection"], r["cells_across_t0"], r["phase"]))
-    with open(here / "penalty_contact.csv", "w", newline="") as f:
+    return rows
+
+
+def penalty_series(rows):
+    """(phase rows at t0/10, resolution rows at phase 0) of the default-stiffness penalty runs."""
+    by_phase = [r for r in rows if r["contact_detection"] == "penalty" and r["cells_across_t0"] == 10
+                and r["penalty_stiffness"] in (1.0, "")]
+    by_cells = sorted((r for r in rows if r["contact_detection"] == "penalty" and r["phase"] < 0.01
+                       and r["penalty_stiffness"] in (1.0, "")), key=lambda r: r["cells_across_t0"])
+    return by_phase, by_cells
+
+
+def main(records="records", stem="penalty_contact"):
+    rows = read_rows(records)
+    with open(here / f"{stem}.csv", "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0]))
         w.writeheader()
         w.writerows(rows)
@@ -103,8 +120,8 @@ def main():
     lines = ["| " + " | ".join(c[1] for c in cols) + " |", "|" + "---|" * len(cols)]
     for r in rows:
         lines.append("| " + " | ".join(str(r[c[0]]) for c in cols) + " |")
-    (here / "penalty_contact.md").write_text(
-        "<!-- written by tables.py from records/; do not edit -->\n" + "\n".join(lines) + "\n")
+    (here / f"{stem}.md").write_text(
+        f"<!-- written by tables.py from {records}/; do not edit -->\n" + "\n".join(lines) + "\n")
 
     fig, (a, b) = plt.subplots(1, 2, figsize=(10, 4))
     phase, conv = node_references()
@@ -112,14 +129,16 @@ def main():
         x, fc, ft = list(x), list(fc), list(ft)
         ax.plot(x, ft, "s-", color="tab:blue", label=f"Ft, node ({what})")
         ax.plot(x, fc, "s--", color="tab:blue", label=f"Fc, node ({what})")
-    sel = [r for r in rows if r["contact_detection"] == "penalty" and r["cells_across_t0"] == 10
-           and r["penalty_stiffness"] == 1.0]
-    a.plot([r["phase"] for r in sel], [r["Ft_N_per_mm"] for r in sel], "o-", color="tab:red", label="Ft, penalty")
-    a.plot([r["phase"] for r in sel], [r["Fc_N_per_mm"] for r in sel], "o--", color="tab:red", label="Fc, penalty")
-    sel = sorted((r for r in rows if r["contact_detection"] == "penalty" and r["phase"] < 0.01
-                  and r["penalty_stiffness"] == 1.0), key=lambda r: r["cells_across_t0"])
-    b.plot([r["cells_across_t0"] for r in sel], [r["Ft_N_per_mm"] for r in sel], "o-", color="tab:red", label="Ft, penalty")
-    b.plot([r["cells_across_t0"] for r in sel], [r["Fc_N_per_mm"] for r in sel], "o--", color="tab:red", label="Fc, penalty")
+    series = [(penalty_series(rows), "tab:red", "penalty" if records == "records" else "penalty, grid slip")]
+    if records != "records":
+        series.insert(0, (penalty_series(read_rows("records")), "tab:grey", "penalty, particle slip"))
+    for (by_phase, by_cells), colour, name in series:
+        a.plot([r["phase"] for r in by_phase], [r["Ft_N_per_mm"] for r in by_phase], "o-", color=colour, label=f"Ft, {name}")
+        a.plot([r["phase"] for r in by_phase], [r["Fc_N_per_mm"] for r in by_phase], "o--", color=colour, label=f"Fc, {name}")
+        b.plot([r["cells_across_t0"] for r in by_cells], [r["Ft_N_per_mm"] for r in by_cells], "o-", color=colour,
+               label=f"Ft, {name}")
+        b.plot([r["cells_across_t0"] for r in by_cells], [r["Fc_N_per_mm"] for r in by_cells], "o--", color=colour,
+               label=f"Fc, {name}")
     for ax in (a, b):
         ax.axhline(201, color="grey", lw=0.8, ls=":")
         ax.axhline(129, color="grey", lw=0.8, ls=":")
@@ -129,9 +148,9 @@ def main():
     b.set_xlabel("cells across t0 (φ = 0)")
     fig.suptitle("h = 0.1 mm, 100 m/min, r_n = 34.4 µm; dotted: measured Fc 201, Ft 129 N/mm")
     fig.tight_layout()
-    fig.savefig(here / "penalty_contact.png", dpi=110)
-    print(f"{len(rows)} runs -> penalty_contact.csv, .md, .png")
+    fig.savefig(here / f"{stem}.png", dpi=110)
+    print(f"{len(rows)} runs -> {stem}.csv, .md, .png")
 
 
 if __name__ == "__main__":
-    main()
+    main(*sys.argv[1:3])
