@@ -36,7 +36,6 @@ struct FrictionRun {
   double worst_node_error = 0.0;  // max over sliding contact nodes of | |dp_t| - mu dp_n | / (mu dp_n)
   double sliding_normal_share = 0.0;  // share of the normal impulse at sliding nodes (particles)
   double mass = 0.0;                  // the block's particle mass, kg/m
-  double friction_work = 0.0;         // the ledger's frictional work at the end, J/m
   double relative_residual = 0.0;     // the ledger's energy residual over initial energy + external work
 };
 
@@ -120,7 +119,6 @@ FrictionRun drag_block(double h, double mu, Vec2 g, Vec2 plate_velocity, double 
   out.sliding_normal_share = all > 0.0 ? sliding / all : 0.0;
   sim.refresh_energy();
   const EnergyTotals& e = sim.energy();
-  out.friction_work = e.friction;
   out.relative_residual = energy_balance_residual(e) / (std::abs(e.initial) + std::abs(e.external_work));
   return out;
 }
