@@ -44,9 +44,9 @@ struct FrictionRun {
 // plate_velocity along x. Window: t in [t0, t1] s. With `angle` (rad) the whole set-up, g and the plate's
 // velocity included, is turned by that angle against the grid about (0.6, 0.1); the results are in the plate's
 // frame (x along its top, y normal to it).
-FrictionRun drag_block(double h, double mu, Vec2 g, Vec2 plate_velocity, double t0, double t1,
-                       ContactDetection detection = ContactDetection::Node, double angle = 0.0,
-                       double flip_fraction = SolverSpec{}.flip_fraction) {
+// The scene of drag_block (below): the block on the plate, turned by `angle` against the grid.
+Scene block_on_plate(double h, double mu, Vec2 g, Vec2 plate_velocity, ContactDetection detection, double angle,
+                     double flip_fraction) {
   const Vec2 along(std::cos(angle), std::sin(angle)), normal(-std::sin(angle), std::cos(angle)), pivot(0.6, 0.1);
   const auto turn = [&](Vec2 v) { return Vec2(v.x() * along + v.y() * normal); };
   const auto place = [&](Vec2 x) { return Vec2(pivot + turn(x - pivot)); };
@@ -77,6 +77,14 @@ FrictionRun drag_block(double h, double mu, Vec2 g, Vec2 plate_velocity, double 
   plate.friction = mu;
   plate.velocity = turn(plate_velocity);
   s.rigid_bodies.push_back(plate);
+  return s;
+}
+
+FrictionRun drag_block(double h, double mu, Vec2 g, Vec2 plate_velocity, double t0, double t1,
+                       ContactDetection detection = ContactDetection::Node, double angle = 0.0,
+                       double flip_fraction = SolverSpec{}.flip_fraction) {
+  const Vec2 along(std::cos(angle), std::sin(angle)), normal(-std::sin(angle), std::cos(angle));
+  const Scene s = block_on_plate(h, mu, g, plate_velocity, detection, angle, flip_fraction);
   Simulation sim(s);
   double M = 0.0;
   for (double m : sim.particles().mass) M += m;
@@ -251,20 +259,8 @@ struct NoisyRest {
 
 NoisyRest rest_block_with_velocity_noise(double delta) {
   const double h = 0.01;
-  Scene s;
-  s.solver.contact_detection = ContactDetection::Penalty;
-  s.grid = GridSpec{h, Vec2(0.3, 0), Vec2(1.3, 0.35)};
-  s.solver.cfl = 0.4;
-  s.solver.flip_fraction = 1.0;  // the noise stays on the particles
-  s.body_force = Vec2(0, -10.0);
-  s.materials.push_back(elastic_material("rubber", 1e6, 0.3, 1000.0));
-  s.bodies.push_back(rectangle_body("block", "rubber", Vec2(0.5, 0.1), Vec2(0.7, 0.2), 2));
-  RigidBodySpec plate;
-  plate.name = "plate";
-  plate.polygon = box(Vec2(-2.0, -0.1), Vec2(6.0, 0.1));
-  plate.friction = 0.3;
-  s.rigid_bodies.push_back(plate);
-  Simulation sim(s);
+  // Pure FLIP: the noise stays on the particles. The plate at rest.
+  Simulation sim(block_on_plate(h, 0.3, Vec2(0, -10.0), Vec2::Zero(), ContactDetection::Penalty, 0.0, 1.0));
   Particles& P = sim.particles();
   for (std::size_t p = 0; p < P.size(); ++p) {  // a checkerboard over the particles (2 per cell and direction)
     const int i = static_cast<int>(std::floor(P.position[p].x() / (0.5 * h)));
