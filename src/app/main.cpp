@@ -257,6 +257,10 @@ int main(int argc, char** argv) {
         std::cerr << "resuming the unfinished run of this scene in " << out_dir << "\n";
         code = resume_case(run_options);
         break;
+      case ExistingRun::Outdated:
+        std::cerr << "rerunning: the run in " << out_dir << " is outdated (" << outdated_run_reason(out_dir, c) << ")\n";
+        run_options.force = true;
+        break;
       case ExistingRun::None:
         run_options.force = true;
         break;

@@ -51,11 +51,15 @@ int list_conditions(const std::vector<Condition>& conditions, const fs::path& ou
     const Case condition = condition_case(c, case_file);
     const RunCost cost = estimate_run_cost(condition.scene);
     ExistingRun existing = existing_run(out / c.id, condition);
-    const bool recorded = existing != ExistingRun::Complete && !o.records_dir.empty() &&
-                          existing_run(fs::path(o.records_dir) / c.id, condition) == ExistingRun::Complete;
+    const ExistingRun record =
+        o.records_dir.empty() ? ExistingRun::None : existing_run(fs::path(o.records_dir) / c.id, condition);
+    const bool recorded = existing != ExistingRun::Complete && record == ExistingRun::Complete;
     if (recorded) existing = ExistingRun::Complete;
+    // outdated: made by an older model of its scene (solver/model_version.hpp), runs again
     const char* state = recorded ? "record" : existing == ExistingRun::Complete ? "complete"
-                        : existing == ExistingRun::Resumable ? "resumable" : "-";
+                        : existing == ExistingRun::Resumable ? "resumable"
+                        : existing == ExistingRun::Outdated ? "outdated"
+                        : record == ExistingRun::Outdated ? "outdated-record" : "-";
     const double ps = cost.particle_steps();
     total_particle_steps += ps;
     if (existing != ExistingRun::Complete) total_to_run += ps;
@@ -129,7 +133,13 @@ int run_validation(const ValidateOptions& o) {
   if (!o.records_dir.empty()) {
     for (Condition& c : conditions) {
       const fs::path case_file = out / "cases" / (c.id + ".toml");
-      if (!restore_run_record(fs::path(o.records_dir) / c.id, out / c.id, condition_case(c, case_file))) continue;
+      const fs::path record = fs::path(o.records_dir) / c.id;
+      const Case condition = condition_case(c, case_file);
+      if (c.selected && existing_run(record, condition) == ExistingRun::Outdated)
+        std::cerr << fmt::format("note: {}: the record in {} is outdated ({}); the condition runs again and its new "
+                                 "run replaces the record\n",
+                                 c.id, o.records_dir, outdated_run_reason(record, condition));
+      if (!restore_run_record(record, out / c.id, condition)) continue;
       c.selected = false;
       c.origin = "record";
     }

@@ -21,6 +21,7 @@
 #include "run/case_loading.hpp"
 #include "run/case_run.hpp"
 #include "run/run_summary.hpp"
+#include "solver/model_version.hpp"
 
 namespace mpmcut {
 
@@ -132,14 +133,27 @@ ExistingRun existing_run(const fs::path& dir, const Case& c) {
   std::ostringstream expected;
   write_scene(c, expected);
   if (read_whole_file(dir / "scene.toml") != expected.str()) return ExistingRun::None;
-  std::string status;
+  RunSummary summary;
   try {
-    status = read_summary(dir / "summary.json").status;
+    summary = read_summary(dir / "summary.json");
   } catch (const std::exception&) {
     return ExistingRun::None;
   }
-  if (status == run_status::complete) return ExistingRun::Complete;
-  return fs::exists(dir / "checkpoints" / "latest", ec) ? ExistingRun::Resumable : ExistingRun::None;
+  const bool complete = summary.status == run_status::complete;
+  if (!complete && !fs::exists(dir / "checkpoints" / "latest", ec)) return ExistingRun::None;
+  if (summary.model_version < model_version(c.scene)) return ExistingRun::Outdated;
+  return complete ? ExistingRun::Complete : ExistingRun::Resumable;
+}
+
+std::string outdated_run_reason(const fs::path& dir, const Case& c) {
+  int recorded = 0;
+  try {
+    recorded = read_summary(dir / "summary.json").model_version;
+  } catch (const std::exception&) {
+    return "";
+  }
+  const std::string changes = model_changes_since(recorded, c.scene);
+  return changes.empty() ? "" : fmt::format("made by model version {} of this scene; since then: {}", recorded, changes);
 }
 
 std::unique_ptr<CaseRun> open_resumed_run(const RunOptions& options) {
@@ -161,8 +175,11 @@ std::unique_ptr<CaseRun> open_resumed_run(const RunOptions& options) {
       throw refuse(fmt::format("it has no {}, so it is not the result directory of a run that started stepping",
                                file));
   std::string status;
+  int recorded_model_version = 0;
   try {
-    status = read_summary(root / "summary.json").status;
+    const RunSummary summary = read_summary(root / "summary.json");
+    status = summary.status;
+    recorded_model_version = summary.model_version;
   } catch (const std::exception& e) {
     throw refuse(e.what());
   }
@@ -183,6 +200,12 @@ std::unique_ptr<CaseRun> open_resumed_run(const RunOptions& options) {
   } catch (const InputError& e) {
     throw refuse(e.what());
   }
+  // A continuation by another model of the scene would be neither model's run.
+  if (const std::string changes = model_changes_since(recorded_model_version, resumed_case.scene); !changes.empty())
+    throw refuse(fmt::format("it was made by model version {} of its scene, and the physics of that scene has changed "
+                             "since ({}); a continuation would mix the two models. Run it again from the start: "
+                             "mpmcut run {} --out {} --force",
+                             recorded_model_version, changes, (root / "scene.toml").string(), root.string()));
   CheckpointStore store(root);
   std::optional<CheckpointStore::Loaded> loaded;
   try {

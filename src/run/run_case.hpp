@@ -33,9 +33,15 @@ int run_case(const Case& c, const RunOptions& options);
 
 // What a result directory holds for `scene` (studies rerun with `run --keep-complete`: a complete run
 // of the same scene is kept, an unfinished one with a checkpoint is resumed, anything else is rerun).
-// "The same scene" = its scene.toml is byte for byte what this scene writes.
-enum class ExistingRun { None, Complete, Resumable };
+// "The same scene" = its scene.toml is byte for byte what this scene writes. Outdated: a complete or
+// resumable run of the same scene made by an older model of it (summary.json model_version below
+// model_version(c.scene), solver/model_version.hpp); it is run again from the start.
+enum class ExistingRun { None, Complete, Resumable, Outdated };
 ExistingRun existing_run(const std::filesystem::path& dir, const Case& c);
+
+// Why the run in `dir` is outdated for `c`: "made by model version N; since then: <the changes>"; empty
+// when it is not (or has no readable summary).
+std::string outdated_run_reason(const std::filesystem::path& dir, const Case& c);
 
 // Continues the run in options.out_dir from its newest valid checkpoint (scene from its
 // scene.toml); returns one of ExitCode.

@@ -12,6 +12,7 @@
 #include "cutting/cutting_resolution.hpp"
 #include "cutting/input_plausibility.hpp"
 #include "run/mass_scaling_report.hpp"
+#include "solver/model_version.hpp"
 #include "solver/simulation.hpp"
 
 namespace mpmcut {
@@ -22,7 +23,7 @@ using json = nlohmann::json;
 
 // The typed keys, each written and read once below; everything else goes to `sections`.
 constexpr const char* kTypedKeys[] = {
-    "status", "message", "mpmcut_version", "source_revision", "title", "case_file", "particles", "grid_nodes", "cell_size_m", "steps",
+    "status", "message", "mpmcut_version", "source_revision", "model_version", "title", "case_file", "particles", "grid_nodes", "cell_size_m", "steps",
     "simulated_time_s", "end_time_s", "wall_time_s", "threads", "particle_steps_per_s", "energy_J_per_m",
     "energy_balance", "max_temperature_K", "rigid_bodies", "removed_particles", "removed_mass_kg_per_m",
     "last_checkpoint", "resumed_from", "mean_cutting_force_N_per_mm", "mean_thrust_force_N_per_mm"};
@@ -100,6 +101,7 @@ RunSummary summarize(const Simulation& sim, const std::optional<CuttingParameter
   s.message = message;
   s.mpmcut_version = MPMCUT_VERSION;
   s.source_revision = source_revision();
+  s.model_version = model_version(sim.scene());
   s.title = sim.scene().title;
   s.case_file = sim.scene().source_file;
   s.particles = sim.particles().size();
@@ -150,6 +152,7 @@ json to_json(const RunSummary& s) {
   if (!s.message.empty()) j["message"] = s.message;
   j["mpmcut_version"] = s.mpmcut_version;
   j["source_revision"] = s.source_revision;
+  j["model_version"] = s.model_version;
   j["title"] = s.title;
   j["case_file"] = s.case_file;
   j["particles"] = s.particles;
@@ -205,6 +208,7 @@ RunSummary summary_from_json(const json& j) {
   if (j.contains("grid_nodes")) s.grid_nodes = j["grid_nodes"].get<std::uint64_t>();
   if (j.contains("steps")) s.steps = j["steps"].get<long>();
   if (j.contains("threads")) s.threads = j["threads"].get<int>();
+  if (j.contains("model_version")) s.model_version = j["model_version"].get<int>();
   for (auto [key, value] : {std::pair{"cell_size_m", &s.cell_size_m}, {"simulated_time_s", &s.simulated_time_s},
                             {"end_time_s", &s.end_time_s}, {"wall_time_s", &s.wall_time_s},
                             {"particle_steps_per_s", &s.particle_steps_per_s},

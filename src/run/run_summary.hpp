@@ -40,6 +40,8 @@ struct RunSummary {
   std::string message;  // why it failed or how to continue; empty: none
   std::string mpmcut_version, title, case_file;
   std::string source_revision;  // git revision of the program that wrote the summary (run/source_revision.hpp)
+  // The model version of the run's scene (solver/model_version.hpp); 0 in summaries written before it was counted.
+  int model_version = 0;
   std::uint64_t particles = 0, grid_nodes = 0;
   double cell_size_m = 0.0;
   long steps = 0;

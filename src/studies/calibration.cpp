@@ -22,6 +22,8 @@
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
 #include "io/whole_file.hpp"
+#include "run/case_loading.hpp"
+#include "solver/model_version.hpp"
 #include "studies/task_farm.hpp"
 
 namespace mpmcut {
@@ -80,6 +82,7 @@ struct Evaluation {
   std::vector<double> values;  // the parameters, in their units
   double objective = 0;
   std::vector<ConditionResult> conditions;  // per training condition
+  int model_version = 0;  // of the runs' scenes (solver/model_version.hpp); 0 in caches written before it was kept
 };
 
 json to_json(const Evaluation& e) {
@@ -87,7 +90,8 @@ json to_json(const Evaluation& e) {
   for (const ConditionResult& r : e.conditions)
     c.push_back({{"status", r.status}, {"Fc_N_per_mm", to_json(r.fc_N_per_mm)}, {"Ft_N_per_mm", to_json(r.ft_N_per_mm)},
                  {"chip_thickness_um", to_json(r.chip_thickness_um)}});
-  return {{"u", e.u}, {"values", e.values}, {"objective", e.objective}, {"conditions", c}};
+  return {{"u", e.u}, {"values", e.values}, {"objective", e.objective}, {"conditions", c},
+          {"model_version", e.model_version}};
 }
 Evaluation evaluation_from_json(const json& j) {
   Evaluation e;
@@ -97,6 +101,7 @@ Evaluation evaluation_from_json(const json& j) {
   for (const json& c : j.at("conditions"))
     e.conditions.push_back({c.at("status").get<std::string>(), from_json(c.at("Fc_N_per_mm")),
                             from_json(c.at("Ft_N_per_mm")), from_json(c.at("chip_thickness_um"))});
+  if (j.contains("model_version")) e.model_version = j.at("model_version").get<int>();
   return e;
 }
 
@@ -145,6 +150,9 @@ class Calibrator {
   double u_of(std::size_t i, double value) const { return parameter_unit(c_.parameters[i], value); }
 
   ConditionRunSettings settings_for(const std::vector<double>& values) const;
+  ConditionRunSettings condition_settings(const MeasuredForces& m, const ConditionRunSettings& trial) const;
+  // The model version of the training runs at `values`: the newest over their scenes.
+  int model_version_at(const std::vector<double>& values) const;
   std::vector<ConditionResult> run_conditions(const std::vector<MeasuredForces>& conditions,
                                               const std::vector<double>& values, const fs::path& dir, bool& completed);
   // Relative errors of one condition (nullopt where not measured), the failed-run error where it failed.
@@ -189,6 +197,23 @@ ConditionRunSettings Calibrator::settings_for(const std::vector<double>& values)
   return s;
 }
 
+ConditionRunSettings Calibrator::condition_settings(const MeasuredForces& m, const ConditionRunSettings& trial) const {
+  ConditionRunSettings settings = trial;
+  settings.cells_per_feed = condition_run_settings(c_, m).cells_per_feed;
+  return settings;
+}
+
+int Calibrator::model_version_at(const std::vector<double>& values) const {
+  const ConditionRunSettings trial = settings_for(values);
+  int version = 0;
+  for (const MeasuredForces& m : c_.training) {
+    const CuttingCondition cc = cutting_condition(m);
+    const Case c = parse_case(condition_case_text(cc, condition_settings(m, trial)), "the case of " + cc.id);
+    version = std::max(version, model_version(c.scene));
+  }
+  return version;
+}
+
 std::vector<ConditionResult> Calibrator::run_conditions(const std::vector<MeasuredForces>& conditions,
                                                         const std::vector<double>& values, const fs::path& dir,
                                                         bool& completed) {
@@ -198,10 +223,8 @@ std::vector<ConditionResult> Calibrator::run_conditions(const std::vector<Measur
   std::vector<ChildRun> runs;
   for (const MeasuredForces& m : conditions) {
     const CuttingCondition cc = cutting_condition(m);
-    ConditionRunSettings settings = trial;
-    settings.cells_per_feed = condition_run_settings(c_, m).cells_per_feed;
     const fs::path case_file = dir / "cases" / (cc.id + ".toml");
-    write_file_atomically(case_file, [&](std::ostream& s) { s << condition_case_text(cc, settings); });
+    write_file_atomically(case_file, [&](std::ostream& s) { s << condition_case_text(cc, condition_settings(m, trial)); });
     ChildRun r;
     r.name = dir.filename().string() + "/" + cc.id;
     // --keep-complete: an evaluation cut short (a stop, the end of a working session) resumes its runs from their
@@ -277,15 +300,23 @@ double Calibrator::nlopt_objective(unsigned n, const double* x, double*, void* s
 double Calibrator::evaluate(const std::vector<double>& u) {
   const std::string key = point_key(u);
   const std::size_t index = sequence_.size() + 1;
-  if (const auto it = cache_.find(key); it != cache_.end()) {
-    sequence_.emplace_back(stage_, key);
-    ++replayed_;
-    return it->second.objective;
-  }
-  if (interrupted_) return HUGE_VAL;  // NLopt is stopping; nothing more runs
   Evaluation e;
   e.u = u;
   for (std::size_t i = 0; i < u.size(); ++i) e.values.push_back(value_of(i, u[i]));
+  e.model_version = model_version_at(e.values);
+  if (const auto it = cache_.find(key); it != cache_.end()) {
+    if (it->second.model_version >= e.model_version) {
+      sequence_.emplace_back(stage_, key);
+      ++replayed_;
+      return it->second.objective;
+    }
+    // Made by an older model of these runs (solver/model_version.hpp): its runs are outdated and run again.
+    if (!interrupted_)
+      std::cout << fmt::format("evaluation {}: the cached result is of model version {}, these runs are of version "
+                               "{}; running it again\n",
+                               index, it->second.model_version, e.model_version);
+  }
+  if (interrupted_) return HUGE_VAL;  // NLopt is stopping; nothing more runs
   std::string values;
   for (std::size_t i = 0; i < u.size(); ++i)
     values += fmt::format("{}{} = {:.6g}{}", values.empty() ? "" : ", ", c_.parameters[i].name, e.values[i],

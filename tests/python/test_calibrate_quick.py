@@ -13,9 +13,12 @@ condition, a budget of 3 evaluations: 2 of CRS2, then BOBYQA from the best point
     identical (deterministic for a seed);
   - a second start over a complete directory runs nothing (neither evaluations nor held-back runs), also from a copy
     of the configuration with a comment added and a number respelt; a changed bound is refused naming its key, and
-    so are measured rows that differ from those the evaluations were made with.
+    so are measured rows that differ from those the evaluations were made with;
+  - a cached evaluation of an older model version of its runs (solver/model_version.hpp) is evaluated again, its
+    runs (current) kept.
 """
 import csv
+import json
 import math
 import os
 import re
@@ -147,6 +150,23 @@ def main(binary, scratch):
     log = calibrate(binary, out, "--no-plots")
     if "(0 run now, 3 from the cache)" not in log:
         fail("rows that only moved in the measurement file were not resumed")
+    # A cached evaluation made by an older model of its runs: evaluated again, not replayed. The quick runs are node
+    # detection (model version 0, no change applies to them), so -1 stands for a version before a change; their
+    # run directories are current and kept.
+    lines = read(cache).splitlines(keepends=True)
+    first = json.loads(lines[0])
+    first["evaluation"]["model_version"] = -1
+    with open(cache, "w") as f:
+        f.write(json.dumps(first) + "\n" + "".join(lines[1:]))
+    log = calibrate(binary, out, "--no-plots")
+    if "evaluation 1: the cached result is of model version -1" not in log or "(1 run now, 2 from the cache)" not in log:
+        fail("a cached evaluation of an older model version was replayed instead of evaluated again")
+    logs = os.path.join(out, "evaluations", "e0001", "logs")
+    for name in sorted(os.listdir(logs)):
+        if not name.endswith(".analyze.log") and "already holds the complete run" not in read(os.path.join(logs, name)):
+            fail(f"the evaluation of an older model version ran {name[:-4]} again, though its run is current")
+    if read(os.path.join(out, "evaluations.csv")) != table:
+        fail("evaluations.csv differs after evaluating the outdated evaluation again")
     with open(rows_file, "w") as f:
         f.write(rows_text.replace(", Fc ", ", Fc 1", 1))
     p = subprocess.run([binary, "calibrate", CONFIG, "--out", out, "--no-plots"], capture_output=True, text=True,

@@ -310,6 +310,62 @@ TEST_F(LongRuns, ResumeRefusesCompleteRunsChangedScenesAndNonResults) {
   EXPECT_NE(r.output.find("no such result directory"), std::string::npos) << r.output;
 }
 
+// A run made by an older model of its scene (solver/model_version.hpp) is not kept, resumed or continued. The
+// punch with penalty contact and friction is of model version 1 (the friction spring's slip from the grid); its
+// summary with the version taken out stands for a run made before that change; the same punch with node
+// detection is of version 0, so its runs of any age stay current.
+TEST_F(LongRuns, RunsOfAnOlderModelOfTheirSceneAreRunAgainNotKeptOrResumed) {
+  // Penalty contact needs a gap between the punch and the particles' domains at the start.
+  const std::vector<std::string> penalty{
+      "--set", "solver.contact_detection=penalty", "--set", "solver.max_steps=30", "--checkpoint-every", "10", "--set",
+      "rigid_body[0].polygon=[[0.6e-3, 0.52e-3], [1.0e-3, 0.52e-3], [1.0e-3, 0.9e-3], [0.6e-3, 0.9e-3]]"};
+  auto with = [&](std::vector<std::string> extra) {
+    extra.insert(extra.begin(), penalty.begin(), penalty.end());
+    return extra;
+  };
+  auto model_version = [&](const std::string& name) {
+    const nlohmann::json s = nlohmann::json::parse(read_file(out(name) / "summary.json"));
+    return s.contains("model_version") ? s["model_version"].get<int>() : -1;
+  };
+  auto forget_model_version = [&](const std::string& name) {
+    nlohmann::json s = nlohmann::json::parse(read_file(out(name) / "summary.json"));
+    s.erase("model_version");
+    write_file(out(name) / "summary.json", s.dump(2));
+  };
+  CliResult r = run("penalty", penalty);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(model_version("penalty"), 1);
+  r = run("penalty", with({"--keep-complete"}));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("already holds the complete run"), std::string::npos) << r.output;
+
+  // Made before the change: run again from the start (and then current), not kept.
+  forget_model_version("penalty");
+  r = run("penalty", with({"--keep-complete"}));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("is outdated (made by model version 0 of this scene; since then: version 1 (08f9ca5): "
+                          "penalty contact"),
+            std::string::npos)
+      << r.output;
+  EXPECT_EQ(r.output.find("already holds"), std::string::npos) << r.output;
+  EXPECT_EQ(model_version("penalty"), 1);
+  // Nor continued from its checkpoint: the refusal says how to run it again.
+  forget_model_version("penalty");
+  r = resume("penalty", {"--force"});
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("made by model version 0 of its scene"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("--force"), std::string::npos) << r.output;
+
+  // Node detection: version 0, a summary without the key is as current as one with it.
+  r = run("node", {"--set", "solver.max_steps=30", "--checkpoint-every", "10"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(model_version("node"), 0);
+  forget_model_version("node");
+  r = run("node", {"--set", "solver.max_steps=30", "--checkpoint-every", "10", "--keep-complete"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("already holds the complete run"), std::string::npos) << r.output;
+}
+
 // A cut interrupted inside its steady window and resumed: the forces observer's sums (steady-window means, the
 // rake face's forces, slip speed and frictional work, the edge and flank's) travel in the checkpoint, so the
 // summary's tool results equal the uninterrupted run's to the last digit.
