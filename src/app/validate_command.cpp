@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <iostream>
+#include <map>
 #include <thread>
+#include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "app/plot_command.hpp"
 #include "app/sweep_command.hpp"
@@ -131,18 +134,21 @@ int run_validation(const ValidateOptions& o) {
 
   // Complete runs of the same scene kept in --records come back into `out` and are not run again.
   if (!o.records_dir.empty()) {
+    std::map<std::string, std::vector<std::string>> outdated;  // why -> the selected conditions whose record it is
     for (Condition& c : conditions) {
       const fs::path case_file = out / "cases" / (c.id + ".toml");
       const fs::path record = fs::path(o.records_dir) / c.id;
       const Case condition = condition_case(c, case_file);
       if (c.selected && existing_run(record, condition) == ExistingRun::Outdated)
-        std::cerr << fmt::format("note: {}: the record in {} is outdated ({}); the condition runs again and its new "
-                                 "run replaces the record\n",
-                                 c.id, o.records_dir, outdated_run_reason(record, condition));
+        outdated[outdated_run_reason(record, condition)].push_back(c.id);
       if (!restore_run_record(record, out / c.id, condition)) continue;
       c.selected = false;
       c.origin = "record";
     }
+    for (const auto& [why, ids] : outdated)
+      std::cerr << fmt::format("note: {} record(s) in {} are outdated ({}): {}. These conditions run again and their new "
+                               "runs replace the records\n",
+                               ids.size(), o.records_dir, why, fmt::join(ids, ", "));
   }
 
   // The runs of this invocation; each child keeps a complete run of the same scene (--keep-complete), so a
