@@ -156,6 +156,14 @@ std::string outdated_run_reason(const fs::path& dir, const Case& c) {
   return changes.empty() ? "" : fmt::format("made by model version {} of this scene; since then: {}", recorded, changes);
 }
 
+std::string outdated_run_reason(const fs::path& dir) {
+  try {
+    return outdated_run_reason(dir, load_case(dir / "scene.toml"));
+  } catch (const std::exception&) {
+    return "";  // a scene this program cannot read is reported by whoever runs it
+  }
+}
+
 std::unique_ptr<CaseRun> open_resumed_run(const RunOptions& options) {
   const fs::path root = options.out_dir;
   const auto refuse = [&](const std::string& why) {

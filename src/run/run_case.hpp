@@ -42,6 +42,9 @@ ExistingRun existing_run(const std::filesystem::path& dir, const Case& c);
 // Why the run in `dir` is outdated for `c`: "made by model version N; since then: <the changes>"; empty
 // when it is not (or has no readable summary).
 std::string outdated_run_reason(const std::filesystem::path& dir, const Case& c);
+// The same for the scene of the run's own scene.toml (a study reading its results back); empty also when that
+// scene does not read.
+std::string outdated_run_reason(const std::filesystem::path& dir);
 
 // Continues the run in options.out_dir from its newest valid checkpoint (scene from its
 // scene.toml); returns one of ExitCode.

@@ -20,6 +20,7 @@
 
 #include "io/atomic_file.hpp"
 #include "run/repeated_signal.hpp"
+#include "run/run_case.hpp"
 #include "run/run_summary.hpp"
 #include "studies/study_progress.hpp"
 
@@ -297,10 +298,19 @@ CaseResult read_case_result(const fs::path& dir, const fs::path& log_file, int e
   }
   r.source_revision = s.source_revision.empty() ? "unrecorded" : s.source_revision;
   if (r.status != "complete" && r.message.empty()) r.message = last_lines(log_file, 2);
+  // A complete run of an older model of its scene (a study stopped before it ran it again): not a result of today's
+  // model (solver/model_version.hpp).
+  if (r.status == "complete")
+    if (const std::string why = outdated_run_reason(dir); !why.empty()) {
+      r.status = "outdated";
+      r.message = fmt::format("{}; run the study again to run it again", why);
+    }
 
   // A run that did not complete (interrupted, failed) has cut only part of its length: its mean forces would sit in
   // the study's table beside the complete ones as if they were results.
-  if (r.status != "complete") {
+  if (r.status == "outdated") {
+    r.message += "; forces left out: they are of the older model";
+  } else if (r.status != "complete") {
     r.message += fmt::format("{}forces left out: the run did not complete (its forces.csv holds the cut so far)",
                              r.message.empty() ? "" : "; ");
   } else if (s.mean_cutting_force_N_per_mm && s.mean_thrust_force_N_per_mm) {

@@ -9,39 +9,24 @@
 namespace mpmcut::testing {
 namespace {
 
-Scene punch(const std::string& detection, double friction) {
-  const std::string text = R"toml(
-[grid]
-cell_size = 40.0e-6
-min = [0.0, 0.0]
-max = [2.0e-3, 1.0e-3]
-[solver]
-end_time = 1.0e-6
-contact_detection = ")toml" + detection + R"toml("
-[[material]]
-name = "ti64"
-library = "ti64-johnson-1985"
-[[body]]
-name = "workpiece"
-material = "ti64"
-rectangle = { min = [0.0, 0.0], max = [1.5e-3, 0.5e-3] }
-[[rigid_body]]
-name = "punch"
-polygon = [[0.6e-3, 0.5e-3], [1.0e-3, 0.5e-3], [1.0e-3, 0.9e-3], [0.6e-3, 0.9e-3]]
-velocity = [0.0, -100.0]
-friction = )toml" + std::to_string(friction) + "\n";
-  return parse_case(text, "punch.toml").scene;
+// The elastic block against a rigid wall, with the wall's contact detection and friction set (the block has no
+// heat capacity: the friction heats the wall).
+Scene block_against_wall(const std::string& detection, double friction) {
+  return load_case(std::string(MPMCUT_TEST_DIR) + "/support/cases/elastic_block.toml",
+                   {"solver.contact_detection=" + detection, "rigid_body[0].friction=" + std::to_string(friction),
+                    "rigid_body[0].friction_heat_share=0"})
+      .scene;
 }
 
 TEST(ModelVersion, TheGridSlipChangeAppliesToPenaltyContactWithFrictionOnly) {
-  EXPECT_EQ(model_version(punch("penalty", 0.35)), 1);
-  EXPECT_EQ(model_version(punch("penalty", 0.0)), 0);  // no friction spring: the change alters nothing
-  EXPECT_EQ(model_version(punch("node", 0.35)), 0);
-  EXPECT_EQ(model_version(punch("gap", 0.35)), 0);
-  EXPECT_NE(model_changes_since(0, punch("penalty", 0.35)).find("version 1 (08f9ca5): penalty contact"),
+  EXPECT_EQ(model_version(block_against_wall("penalty", 0.35)), 1);
+  EXPECT_EQ(model_version(block_against_wall("penalty", 0.0)), 0);  // no friction spring: the change alters nothing
+  EXPECT_EQ(model_version(block_against_wall("node", 0.35)), 0);
+  EXPECT_EQ(model_version(block_against_wall("gap", 0.35)), 0);
+  EXPECT_NE(model_changes_since(0, block_against_wall("penalty", 0.35)).find("version 1 (08f9ca5): penalty contact"),
             std::string::npos);
-  EXPECT_EQ(model_changes_since(1, punch("penalty", 0.35)), "");
-  EXPECT_EQ(model_changes_since(0, punch("node", 0.35)), "");
+  EXPECT_EQ(model_changes_since(1, block_against_wall("penalty", 0.35)), "");
+  EXPECT_EQ(model_changes_since(0, block_against_wall("node", 0.35)), "");
 }
 
 TEST(ModelVersion, VersionsCountUpFromOneWithTheirCommitAndWhatChanged) {
