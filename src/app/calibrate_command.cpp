@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "app/command_exit.hpp"
 #include "app/plot_command.hpp"
 #include "app/path_option.hpp"
 #include "app/progress_option.hpp"
@@ -83,16 +84,7 @@ void add_calibrate_command(CLI::App& app) {
   add_progress_option(cmd, o->progress_interval_s);
   cmd->add_flag("-f,--force", o->force, "Delete the result directory first (no resume)");
   cmd->add_flag("--no-plots", o->no_plots, "Only the tables");
-  cmd->callback([o]() {
-    int code = 0;
-    try {
-      code = run_study([&] { return calibrate(*o); });
-    } catch (const std::exception& e) {
-      std::cerr << "error: " << e.what() << "\n";
-      code = 4;
-    }
-    throw CLI::RuntimeError(code);
-  });
+  cmd->callback([o]() { finish_command([&] { return run_study([&] { return calibrate(*o); }); }); });
 }
 
 }  // namespace mpmcut

@@ -4,6 +4,7 @@
 #include <iostream>
 #include <memory>
 
+#include "app/command_exit.hpp"
 #include "app/path_option.hpp"
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
@@ -43,19 +44,7 @@ void add_convergence_command(CLI::App& app) {
       "from its sweep.csv: observed order, extrapolated value and GCI of Fc, Ft, t0/tc and the energy partition "
       "per condition; writes grid_convergence.csv and grid_convergence.md into the directory");
   c->add_option("dir", *dir, "Sweep directory (holds sweep.csv)")->required()->check(non_empty_path());
-  c->callback([dir]() {
-    int code = 0;
-    try {
-      code = run_convergence(*dir);
-    } catch (const InputError& e) {
-      std::cerr << "error: " << e.what() << "\n";
-      code = kExitInputError;
-    } catch (const std::exception& e) {
-      std::cerr << "error: " << e.what() << "\n";
-      code = 4;
-    }
-    throw CLI::RuntimeError(code);
-  });
+  c->callback([dir]() { finish_command([&] { return run_convergence(*dir); }); });
 }
 
 }  // namespace mpmcut

@@ -14,6 +14,7 @@
 #include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
+#include "app/command_exit.hpp"
 #include "app/plot_command.hpp"
 #include "app/stop_signal.hpp"
 #include "app/path_option.hpp"
@@ -504,19 +505,8 @@ void add_sweep_command(CLI::App& app) {
                     "anything runs (docs/results.md)");
   add_progress_option(sweep, o->progress_interval_s);
   sweep->add_flag("--no-plots", o->no_plots, "Only the tables");
-  sweep->callback([o, &app]() {
-    int code = 0;
-    try {
-      code = run_study([&] { return run_sweep(*o, app); });
-    } catch (const InputError& e) {  // a bad case, --set or --vary: before anything ran
-      std::cerr << "error: " << e.what() << "\n";
-      code = kExitInputError;
-    } catch (const std::exception& e) {
-      std::cerr << "error: " << e.what() << "\n";
-      code = 4;
-    }
-    throw CLI::RuntimeError(code);
-  });
+  // A bad case, --set or --vary is an InputError before anything ran.
+  sweep->callback([o, &app]() { finish_command([&] { return run_study([&] { return run_sweep(*o, app); }); }); });
 }
 
 }  // namespace mpmcut

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "app/command_exit.hpp"
 #include "app/plot_command.hpp"
 #include "app/sweep_command.hpp"
 #include "app/validation_conditions.hpp"
@@ -350,19 +351,7 @@ void add_validate_command(CLI::App& app) {
                          "initial temperature)",
                          1.0, 1e4}})
     v->add_option(t.name, *t.value, t.help)->check(CLI::Range(t.lo, t.hi));
-  v->callback([o]() {
-    int code = 0;
-    try {
-      code = run_study([&] { return run_validation(*o); });
-    } catch (const InputError& e) {
-      std::cerr << "error: " << e.what() << "\n";
-      code = kExitInputError;
-    } catch (const std::exception& e) {
-      std::cerr << "error: " << e.what() << "\n";
-      code = 4;
-    }
-    throw CLI::RuntimeError(code);
-  });
+  v->callback([o]() { finish_command([&] { return run_study([&] { return run_validation(*o); }); }); });
 }
 
 }  // namespace mpmcut
