@@ -303,7 +303,7 @@ CaseResult read_case_result(const fs::path& dir, const fs::path& log_file, int e
   if (r.status == "complete")
     if (const std::string why = outdated_run_reason(dir); !why.empty()) {
       r.status = "outdated";
-      r.message = fmt::format("{}; run the study again to run it again", why);
+      r.message = fmt::format("{}; run the study again to rerun it", why);
     }
 
   // A run that did not complete (interrupted, failed) has cut only part of its length: its mean forces would sit in
