@@ -44,22 +44,27 @@ def slope(points):
     return 100.0 * b / my
 
 
-node, pen = errors(NODE), errors(HERE)
-common = sorted(c for c in pen if c in node and c.startswith("h = ") and "Fc" in pen[c])
-print(f"| over the same {len(common)} force conditions | node detection (validation_speed_ends) | penalty contact |")
-print("|---|---|---|")
-for q, label in (("Fc", "\\|ΔFc\\|"), ("Ft", "\\|ΔFt\\|"), ("Ft/Fc", "\\|Δ(Ft/Fc)\\|"), ("t_c", "\\|Δt_c\\|")):
-    cells = []
-    for rep in (node, pen):
-        e = [abs(rep[c][q][2]) for c in common if q in rep[c]]
-        cells.append(f"{sum(e) / len(e):.1f} / {max(e):.1f} %")
-    print(f"| mean / worst {label} | {cells[0]} | {cells[1]} |")
-within = [sum(abs(rep[c]["Ft/Fc"][2]) <= 15.0 for c in common) for rep in (node, pen)]
-print(f"| Ft/Fc within ±15 % | {within[0]} of {len(common)} | {within[1]} of {len(common)} |")
-h01 = [c for c in common if c.startswith("h = 0.1 mm")]
-speeds = lambda c: float(c.split("vc = ")[1].split(" m/min")[0])
-meas = slope([(speeds(c), node[c]["Fc"][0]) for c in h01])
-sims = [slope([(speeds(c), rep[c]["Fc"][1]) for c in h01]) for rep in (node, pen)]
-print(f"| Fc per e-fold of speed, h = 0.1 mm ({len(h01)} speeds; measured {meas:+.1f} %) | {sims[0]:+.1f} % | {sims[1]:+.1f} % |")
-r = residuals(HERE)
-print(f"\nEnergy residual of the penalty runs: {min(r):+.1f} … {max(r):+.1f} % (summary.json energy_balance.relative_residual; {len(r)} runs).")
+def main():
+    node, pen = errors(NODE), errors(HERE)
+    common = sorted(c for c in pen if c in node and c.startswith("h = ") and "Fc" in pen[c])
+    print(f"| over the same {len(common)} force conditions | node detection (validation_speed_ends) | penalty contact |")
+    print("|---|---|---|")
+    for q, label in (("Fc", "\\|ΔFc\\|"), ("Ft", "\\|ΔFt\\|"), ("Ft/Fc", "\\|Δ(Ft/Fc)\\|"), ("t_c", "\\|Δt_c\\|")):
+        cells = []
+        for rep in (node, pen):
+            e = [abs(rep[c][q][2]) for c in common if q in rep[c]]
+            cells.append(f"{sum(e) / len(e):.1f} / {max(e):.1f} %")
+        print(f"| mean / worst {label} | {cells[0]} | {cells[1]} |")
+    within = [sum(abs(rep[c]["Ft/Fc"][2]) <= 15.0 for c in common) for rep in (node, pen)]
+    print(f"| Ft/Fc within ±15 % | {within[0]} of {len(common)} | {within[1]} of {len(common)} |")
+    h01 = [c for c in common if c.startswith("h = 0.1 mm")]
+    speeds = lambda c: float(c.split("vc = ")[1].split(" m/min")[0])
+    meas = slope([(speeds(c), node[c]["Fc"][0]) for c in h01])
+    sims = [slope([(speeds(c), rep[c]["Fc"][1]) for c in h01]) for rep in (node, pen)]
+    print(f"| Fc per e-fold of speed, h = 0.1 mm ({len(h01)} speeds; measured {meas:+.1f} %) | {sims[0]:+.1f} % | {sims[1]:+.1f} % |")
+    r = residuals(HERE)
+    print(f"\nEnergy residual of the penalty runs: {min(r):+.1f} … {max(r):+.1f} % (summary.json energy_balance.relative_residual; {len(r)} runs).")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,16 +1,17 @@
 """The penalty matrix's records with the grid slip (records/, model version 1) against the particle slip's
 (records_particle_slip/), condition by condition, with their errors against the measured means.
 
-The measured means come from validation.csv here (the report over the particle slip's records, written by
+The measured means come from particle_slip_report/validation.csv (the report over the particle slip's records, written by
 `mpmcut validate`; b = 1 mm assumed for N/mm). Only conditions whose record in records/ has model_version >= 1 are
 compared. Prints Markdown: a table per condition and the mean absolute errors and the h = 0.1 mm speed slope of Fc.
 Run: /usr/bin/python3 docs/results/validation_speed_ends_penalty/compare_slip.py
 """
 import csv
 import json
-import math
 import pathlib
 import re
+
+from compare import slope  # least-squares dFc/d ln v in % of the mean, as compare.py reports it
 
 HERE = pathlib.Path(__file__).resolve().parent
 
@@ -18,7 +19,7 @@ HERE = pathlib.Path(__file__).resolve().parent
 def measured_means():
     """(h_mm, vc_m_per_min) -> {"Fc": N/mm, "Ft": N/mm} from the report's validation.csv."""
     out = {}
-    with open(HERE / "validation.csv", newline="") as f:
+    with open(HERE / "particle_slip_report" / "validation.csv", newline="") as f:
         for row in csv.DictReader(f):
             m = re.match(r"h = ([\d.]+) mm, vc = ([\d.]+) m/min", row["condition"])
             if m and row["quantity"] in ("Fc", "Ft") and row["measured_mean"]:
@@ -29,15 +30,6 @@ def measured_means():
 def record(path):
     s = json.loads((path / "summary.json").read_text())
     return s.get("model_version", 0), s.get("mean_cutting_force_N_per_mm"), s.get("mean_thrust_force_N_per_mm")
-
-
-def slope(points):
-    """Least-squares dFc/d ln v in % of the mean Fc."""
-    xs = [math.log(v) for v, _ in points]
-    ys = [f for _, f in points]
-    mx, my = sum(xs) / len(xs), sum(ys) / len(ys)
-    b = sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sum((x - mx) ** 2 for x in xs)
-    return 100.0 * b / my
 
 
 def main():
