@@ -23,7 +23,8 @@ using json = nlohmann::json;
 
 // The typed keys, each written and read once below; everything else goes to `sections`.
 constexpr const char* kTypedKeys[] = {
-    "status", "message", "mpmcut_version", "source_revision", "model_version", "title", "case_file", "particles", "grid_nodes", "cell_size_m", "steps",
+    "status", "message", "mpmcut_version", "source_revision", "model_version", "title", "case_file", "particles",
+    "grid_nodes", "cell_size_m", "steps",
     "simulated_time_s", "end_time_s", "wall_time_s", "threads", "particle_steps_per_s", "energy_J_per_m",
     "energy_balance", "max_temperature_K", "rigid_bodies", "removed_particles", "removed_mass_kg_per_m",
     "last_checkpoint", "resumed_from", "mean_cutting_force_N_per_mm", "mean_thrust_force_N_per_mm"};
