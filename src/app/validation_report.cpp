@@ -494,7 +494,7 @@ std::string assumptions_section(const ReportParts& r) {
                           *settings.tool_heat_transfer_coefficient)
             : std::string("; the tool surface is adiabatic"))
     << "; contact detection: "
-    << (settings.contact_detection.empty() ? std::string("node (the preset's)")
+    << (settings.contact_detection.empty() ? std::string("penalty (the preset's)")
                                            : settings.contact_detection + " (--contact-detection)")
     << "; volumetric strain rate: "
     << (settings.volumetric_average.empty() ? std::string("each particle's own (the preset's)")

@@ -150,8 +150,8 @@ def main(binary, scratch):
     log = calibrate(binary, out, "--no-plots")
     if "(0 run now, 3 from the cache)" not in log:
         fail("rows that only moved in the measurement file were not resumed")
-    # A cached evaluation made by an older model of its runs: evaluated again, not replayed. The quick runs are node
-    # detection (model version 0, no change applies to them), so -1 stands for a version before a change; their
+    # A cached evaluation made by an older model of its runs: evaluated again, not replayed. The quick runs are the
+    # preset's penalty contact with friction (model version 1), so -1 stands for a version before a change; their
     # run directories are current and kept.
     lines = read(cache).splitlines(keepends=True)
     first = json.loads(lines[0])

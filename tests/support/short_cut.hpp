@@ -46,8 +46,11 @@ struct CutResult {
   bool finite = true;
 };
 
-inline CutResult run_cut(const CuttingParameters& c, const MaterialParameters& material = ti64()) {
-  const Scene scene = build_cutting_scene(c, material);
+// `detection`: the tool contact; none: the preset's (penalty contact).
+inline CutResult run_cut(const CuttingParameters& c, const MaterialParameters& material = ti64(),
+                         std::optional<ContactDetection> detection = std::nullopt) {
+  Scene scene = build_cutting_scene(c, material);
+  if (detection) scene.solver.contact_detection = *detection;
   Simulation sim(scene);
   const RigidBodySpec& tool_spec = scene.rigid_bodies[0];
   const RigidPolygon tool(tool_spec.polygon, tool_spec.rounding_radius);

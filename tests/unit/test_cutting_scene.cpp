@@ -10,7 +10,9 @@
 #include "contact/rigid_polygon.hpp"
 #include "cutting/cutting_scene.hpp"
 #include "cutting/tool_geometry.hpp"
+#include "io/material_library.hpp"
 #include "physics/material_parameters.hpp"
+#include "run/case_loading.hpp"
 
 namespace mpmcut {
 namespace {
@@ -118,6 +120,37 @@ TEST(CuttingScene, AutomaticToolFitsEveryAcceptedAngleAndRadius) {
         EXPECT_GE(leftmost, L + 0.5 * h - 1e-9);
         EXPECT_LE(shape.upper().x(), s.grid.max.x());
       }
+}
+
+// The preset's contact is the penalty contact, whose springs act wherever a particle's domain reaches into the tool:
+// every tool the preset accepts must start clear of the workpiece's particle domains, or a run's own scene.toml would
+// not read back (resume, analyze) and the first step would shoot those particles off. The complete scene of each
+// angle, radius and particle count parses back (scene_parser.cpp's check_rigid_overlaps), and a case's [solver]
+// contact_detection still chooses another.
+TEST(CuttingScene, PenaltyContactIsThePresetsAndEveryToolStartsClearOfTheParticleDomains) {
+  const MaterialParameters& m = *builtin_material_library().find("ti64-cutting");
+  for (const double rake : {-44.9, -20.0, 0.0, 38.0})
+    for (const double clearance : {0.5, 11.0})
+      for (const double radius_t0 : {0.0, 0.34, 1.5, 5.0})
+        for (const int ppc : {1, 2, 4}) {
+          SCOPED_TRACE(::testing::Message() << "rake " << rake << ", clearance " << clearance << ", r " << radius_t0
+                                            << " t0, " << ppc << " particles per cell");
+          CuttingParameters c = tool_test_cut();
+          c.rake_angle_deg = rake;
+          c.clearance_angle_deg = clearance;
+          c.edge_radius = radius_t0 * c.uncut_chip_thickness;
+          c.cut_length += tool_engagement_travel(c);
+          c.particles_per_cell = ppc;
+          c.material = m.name;
+          const Case built{build_cutting_scene(c, m), c};
+          EXPECT_EQ(built.scene.solver.contact_detection, ContactDetection::Penalty);
+          EXPECT_NO_THROW(parse_case(scene_text(built), "scene.toml"));
+        }
+  const std::string cut = "[cutting]\nmaterial = \"ti64-cutting\"\ncutting_speed = 2.0\nuncut_chip_thickness = 0.1e-3\n"
+                          "cut_length = 0.2e-3\n";
+  EXPECT_EQ(parse_case(cut, "cut.toml").scene.solver.contact_detection, ContactDetection::Penalty);
+  EXPECT_EQ(parse_case(cut + "[solver]\ncontact_detection = \"node\"\n", "cut.toml").scene.solver.contact_detection,
+            ContactDetection::Node);
 }
 
 // Sizes given that cannot make a tool are refused at their key, saying what would fit.

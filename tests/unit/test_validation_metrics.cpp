@@ -89,10 +89,12 @@ TEST(ValidationCases, ContactDetectionReachesTheScene) {
   c.edge_radius_um = 30.0;
   ConditionRunSettings s;
   EXPECT_EQ(condition_case_text(c, s).find("[solver]"), std::string::npos);
-  EXPECT_EQ(parse_case(condition_case_text(c, s), "test.toml").scene.solver.contact_detection, ContactDetection::Node);
-  s.contact_detection = "penalty";
+  // Without the option: the cutting preset's penalty contact.
   EXPECT_EQ(parse_case(condition_case_text(c, s), "test.toml").scene.solver.contact_detection,
             ContactDetection::Penalty);
+  s.contact_detection = "node";
+  EXPECT_EQ(parse_case(condition_case_text(c, s), "test.toml").scene.solver.contact_detection, ContactDetection::Node);
+  s.contact_detection = "penalty";
   // --volumetric-average likewise, into the same [solver] table.
   EXPECT_EQ(parse_case(condition_case_text(c, s), "test.toml").scene.solver.volumetric_average, VolumetricAverage::Off);
   s.volumetric_average = "nodal";
