@@ -10,7 +10,9 @@
 
 #include "cutting/cutting_forces.hpp"
 #include "cutting/cutting_resolution.hpp"
+#include "cutting/cutting_scene.hpp"
 #include "io/atomic_file.hpp"
+#include "io/scene_writer.hpp"
 #include "run/run_summary.hpp"
 #include "studies/validation_metrics.hpp"
 
@@ -494,7 +496,7 @@ std::string assumptions_section(const ReportParts& r) {
                           *settings.tool_heat_transfer_coefficient)
             : std::string("; the tool surface is adiabatic"))
     << "; contact detection: "
-    << (settings.contact_detection.empty() ? std::string("penalty (the preset's)")
+    << (settings.contact_detection.empty() ? contact_detection_name(kCuttingPresetContact) + " (the preset's)"
                                            : settings.contact_detection + " (--contact-detection)")
     << "; volumetric strain rate: "
     << (settings.volumetric_average.empty() ? std::string("each particle's own (the preset's)")

@@ -144,10 +144,7 @@ Scene build_cutting_scene(const CuttingParameters& c, const MaterialParameters& 
   s.solver.end_time = c.cut_length / c.cutting_speed;
   s.solver.remove_escaping_particles = true;
   s.solver.mass_scaling_factor = cutting_mass_scaling_factor(c, material);
-  // Penalty contact: its forces do not depend on where the tool sits in its cell (Fc's cell-period noise 2-3 %
-  // against node detection's 11-13 %), its frictional work is the one its forces do and converges under refinement
-  // (docs/cutting.md, "Penalty contact"). A case picks another with solver.contact_detection.
-  s.solver.contact_detection = ContactDetection::Penalty;
+  s.solver.contact_detection = kCuttingPresetContact;
   s.output.snapshot_interval = s.solver.end_time / std::max(1, c.snapshots);
   // Force rows every quarter cell of tool travel: fine enough to resolve chip segmentation.
   s.output.history_interval = 0.25 * h / c.cutting_speed;

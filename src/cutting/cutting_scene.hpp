@@ -18,6 +18,12 @@ struct CuttingKeyError : std::invalid_argument {
   std::string key;  // in [cutting], e.g. "workpiece_length"
 };
 
+// The tool contact of every scene the preset builds; a case's [solver] contact_detection picks another. Penalty
+// contact: its forces do not depend on where the tool sits in its cell (Fc's cell-period noise 2-3 % against node
+// detection's 11-13 %), its frictional work is the one its forces do and converges under refinement (docs/cutting.md,
+// "Which contact a cut uses"). Node detection until 2026-12-07.
+inline constexpr ContactDetection kCuttingPresetContact = ContactDetection::Penalty;
+
 // `material` is the resolved workpiece material. Throws CuttingKeyError naming the parameter when the
 // combination cannot be built (e.g. a cell larger than the chip), std::invalid_argument for the tool's shape.
 Scene build_cutting_scene(const CuttingParameters& c, const MaterialParameters& material);

@@ -165,6 +165,8 @@ std::vector<std::string> contact_detection_names() {
   return names;
 }
 
+std::string contact_detection_name(ContactDetection d) { return name(d); }
+
 std::vector<std::string> volumetric_average_names() { return {"off", "nodal"}; }
 
 }  // namespace mpmcut

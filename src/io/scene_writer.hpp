@@ -15,6 +15,8 @@ void write_scene_tables(const Scene& scene, std::ostream& out);
 
 // Every contact detection as a case file spells it (solver.contact_detection), for options that pass one on.
 std::vector<std::string> contact_detection_names();
+// One of them.
+std::string contact_detection_name(ContactDetection d);
 // Likewise every solver.volumetric_average.
 std::vector<std::string> volumetric_average_names();
 

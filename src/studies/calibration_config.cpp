@@ -102,8 +102,8 @@ CalibrationConfig read_calibration_config(const fs::path& file, std::string_view
              c.runs.friction);
     // The case files say where a fixed friction came from (it said "preset default" for a value given here).
     if (r->has("friction")) c.runs.friction_note = "the calibration's [runs] friction";
-    // The contact of every run, as `validate --contact-detection` (empty: the preset's penalty contact, so
-    // that existing configurations write the same case files).
+    // The contact of every run, as `validate --contact-detection` (empty: the preset's, and the case files carry no
+    // [solver] table, as before the key existed).
     // Likewise the volumetric strain rate, as `validate --volumetric-average`.
     const auto solver_choice = [&](const char* key, const std::vector<std::string>& names) {
       const std::string value = r->string(key, "");
