@@ -216,8 +216,9 @@ void CuttingForcesObserver::at_finish(const Simulation& sim, nlohmann::json& sum
            "steady-window means over the flat rake face (above the edge arc) of the contact impulses on the tool: "
            "normal force, friction force along the face (positive when the chip drags the tool up the face) and "
            "their ratio, which is the friction coefficient where the chip slides. Contact length: time mean of the "
-           "largest distance from the tool tip, along the rake face, of a contact node (its material position) or "
-           "safeguarded particle at which the contact pushed the material away from the tool"}};
+           "largest distance from the tool tip, along the rake face, of a contact node (its material position), "
+           "penalty-contact particle or safeguarded particle at which the contact pushed the material away from the "
+           "tool"}};
       // The rest of the tool force is carried by the edge arc and the flank (clearance face).
       const Vec2 rake_force = rake_face_force_on_tool(r.normal / r.time, r.friction / r.time, c_.rake_angle_deg);
       summary["edge_and_flank"] = {
