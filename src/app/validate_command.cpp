@@ -16,6 +16,7 @@
 #include "app/validation_report.hpp"
 #include "app/path_option.hpp"
 #include "app/progress_option.hpp"
+#include "cutting/cutting_scene.hpp"
 #include "cutting/input_plausibility.hpp"
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
@@ -323,9 +324,10 @@ void add_validate_command(CLI::App& app) {
   v->add_option("--friction", o->friction, "Coulomb coefficient at the tool (default 0.35; e.g. a calibrated one)")
       ->check(CLI::Range(0.0, 2.0));
   v->add_option("--contact-detection", o->contact_detection,
-                "How the tool contact finds the material (solver.contact_detection; default: the cutting preset's, "
-                "penalty, a spring per particle, smooth in the tool's position on the grid; node: the nodal "
-                "constraint of the runs before 2026-12-07, docs/cutting.md)")
+                fmt::format("How the tool contact finds the material (solver.contact_detection; default: the cutting "
+                            "preset's, {}; penalty: a spring per particle, smooth in the tool's position on the grid; "
+                            "node: the nodal constraint of the runs before 2026-12-07, docs/cutting.md)",
+                            contact_detection_name(kCuttingPresetContact)))
       ->check(CLI::IsMember(contact_detection_names()));
   v->add_option("--volumetric-average", o->volumetric_average,
                 "The volumetric strain rate of every run (solver.volumetric_average; default off; nodal: averaged "
