@@ -17,7 +17,8 @@ namespace mpmcut {
 
 namespace {
 constexpr double kPerMm = 1e-3;  // N/m -> N/mm
-constexpr int kStateSize = 28;  // doubles in the checkpoint state
+constexpr int kStateSize = 38;  // doubles in the checkpoint state
+constexpr int kStateSizeBeforeRegionSplit = 28;
 
 std::vector<std::string> force_columns() {
   return {"time_s",
@@ -33,23 +34,40 @@ std::vector<std::string> force_columns() {
           "rake_friction_force_N_per_mm"};
 }
 
-// The rake face of the tool the preset built (cutting/tool_geometry.cpp): its direction up the face,
-// its outward normal, and the tool tip (lowest point of the cutting edge, on the machined surface)
-// at the tool's current position.
+// The faces of the tool the preset built (cutting/tool_geometry.cpp) at its current position: the rake face's
+// direction up the face and outward normal, the flank's direction away from the edge (rising at the clearance
+// angle) and outward normal, the centre of the edge arc, and the tool tip (lowest point of the cutting edge, on
+// the machined surface).
 struct RakeFrame {
-  Vec2 up, normal, tip;
+  Vec2 up, normal, flank_dir, flank_normal, arc_centre, tip;
   double edge_radius;
 };
 RakeFrame rake_frame(const CuttingParameters& c, const Simulation& sim) {
-  const double a = c.rake_angle_deg * 3.14159265358979323846 / 180.0;
+  const double deg = 3.14159265358979323846 / 180.0;
+  const double a = c.rake_angle_deg * deg, g = c.clearance_angle_deg * deg;
   const RigidBodySpec& tool = sim.scene().rigid_bodies[0];
   RakeFrame f;
   f.up = Vec2(std::sin(a), std::cos(a));
   f.normal = Vec2(-std::cos(a), std::sin(a));
+  f.flank_dir = Vec2(std::cos(g), std::sin(g));
+  f.flank_normal = Vec2(std::sin(g), -std::cos(g));
   f.edge_radius = tool.rounding_radius;
   // Core vertex 0 is the centre of the edge arc (the sharp edge when r = 0).
-  f.tip = tool.polygon.vertices[0] + sim.rigid_bodies()[0].displacement - Vec2(0.0, tool.rounding_radius);
+  f.arc_centre = tool.polygon.vertices[0] + sim.rigid_bodies()[0].displacement;
+  f.tip = f.arc_centre - Vec2(0.0, tool.rounding_radius);
   return f;
+}
+
+// A contact whose normal is within ~2.6 degrees of a face's lies on that face (not on the edge arc between).
+constexpr double kOnFaceCosine = 0.999;
+
+// The steady-window mean force on the tool of one region from its normal and friction impulse sums, N/mm.
+nlohmann::json region_forces(const Vec2& normal, const Vec2& friction, double time) {
+  const Vec2 n = normal / time * kPerMm, t = friction / time * kPerMm, sum = n + t;
+  return {{"cutting_force_N_per_mm", sum.x()},
+          {"thrust_force_N_per_mm", sum.y()},
+          {"normal_part", {{"cutting_force_N_per_mm", n.x()}, {"thrust_force_N_per_mm", n.y()}}},
+          {"friction_part", {{"cutting_force_N_per_mm", t.x()}, {"thrust_force_N_per_mm", t.y()}}}};
 }
 }  // namespace
 
@@ -70,6 +88,11 @@ void CuttingForcesObserver::RakeSums::add(const RakeSums& o) {
   safeguard_normal += o.safeguard_normal;
   friction_work += o.friction_work;
   tool_friction_work += o.tool_friction_work;
+  edge_normal += o.edge_normal;
+  edge_friction += o.edge_friction;
+  flank_normal += o.flank_normal;
+  flank_friction += o.flank_friction;
+  flank_length_time += o.flank_length_time;
 }
 
 void CuttingForcesObserver::after_step(const Simulation& sim) {
@@ -77,18 +100,33 @@ void CuttingForcesObserver::after_step(const Simulation& sim) {
   // rake face, of a place where the contact pushed the material away from the tool (a contact node's
   // mass-weighted material position, or a particle the safeguard moved) on the rake side of the tool
   // (normal within 90 degrees of the rake face's). Rake forces: only the flat face above the edge arc.
+  // Every other contact is on the flank (normal along the flank's, past the arc) or on the edge arc.
   const RakeFrame f = rake_frame(c_, sim);
   RakeSums step;
   step.time = sim.last_dt();
-  double length = 0.0;
+  double length = 0.0, flank_length = 0.0;
   for (const ContactRecord& rec : sim.contact_records()) {
     if (rec.rigid_body != 0) continue;
     step.tool_friction_work += rec.friction_work;
     const double dpn = rec.impulse.dot(rec.normal);  // > 0: pushes the material away from the tool
-    if (dpn <= 0.0 || rec.normal.dot(f.normal) <= 0.0) continue;
     const double along = (rec.position - f.tip).dot(f.up);
+    const bool on_rake_face = along > f.edge_radius && rec.normal.dot(f.normal) >= kOnFaceCosine;
+    const bool rake = on_rake_face && dpn > 0.0;
+    if (!on_rake_face) {
+      const Vec2 normal_part = -dpn * rec.normal, friction_part = -rec.impulse - normal_part;  // on the tool
+      const double along_flank = (rec.position - f.arc_centre).dot(f.flank_dir);
+      if (along_flank > 0.0 && rec.normal.dot(f.flank_normal) >= kOnFaceCosine) {
+        step.flank_normal += normal_part;
+        step.flank_friction += friction_part;
+        if (dpn > 0.0) flank_length = std::max(flank_length, along_flank);
+      } else {
+        step.edge_normal += normal_part;
+        step.edge_friction += friction_part;
+      }
+    }
+    if (dpn <= 0.0 || rec.normal.dot(f.normal) <= 0.0) continue;
     length = std::max(length, along);
-    if (along <= f.edge_radius || rec.normal.dot(f.normal) < 0.999) continue;  // edge arc, not the face
+    if (!rake) continue;  // edge arc, not the face
     step.normal += dpn;
     step.friction -= rec.impulse.dot(f.up);  // on the tool: + when the chip drags it up the face
     step.friction_work += rec.friction_work;
@@ -96,6 +134,7 @@ void CuttingForcesObserver::after_step(const Simulation& sim) {
     if (rec.pass == 2) step.safeguard_normal += dpn;
   }
   step.length_time = length * step.time;
+  step.flank_length_time = flank_length * step.time;
   last_contact_length_ = length;
   row_sums_.add(step);
   if (steady_start_impulse_) steady_sums_.add(step);
@@ -143,17 +182,22 @@ std::string CuttingForcesObserver::checkpoint_state() const {
                                 last_contact_length_,
                                 steady_mid_time_, steady_mid_impulse_ ? 1.0 : 0.0, mid.x(), mid.y(),
                                 a.friction_work, a.tool_friction_work, b.friction_work,
-                                friction_work_known_ ? b.tool_friction_work : -1.0};
+                                friction_work_known_ ? b.tool_friction_work : -1.0,
+                                region_split_known_ ? 1.0 : 0.0,
+                                b.edge_normal.x(), b.edge_normal.y(), b.edge_friction.x(), b.edge_friction.y(),
+                                b.flank_normal.x(), b.flank_normal.y(), b.flank_friction.x(), b.flank_friction.y(),
+                                b.flank_length_time};
   return std::string(reinterpret_cast<const char*>(v), sizeof v);
 }
 
 void CuttingForcesObserver::restore_checkpoint_state(std::string_view state) {
   // A checkpoint written before the rake-face sums (7 values) resumes with those sums at zero, one
   // written before the window's midpoint (20 values) without the steadiness check, one written before
-  // the friction-work sums (24 values) without them (summary.json then leaves them out).
+  // the friction-work sums (24 values) without them (summary.json then leaves them out), one written before the
+  // edge/flank split (28 values) without it. Only the steady window's split is kept (forces.csv has none).
   double v[kStateSize] = {};
   if (state.size() != sizeof v && state.size() != 7 * sizeof(double) && state.size() != 20 * sizeof(double) &&
-      state.size() != 24 * sizeof(double))
+      state.size() != 24 * sizeof(double) && state.size() != kStateSizeBeforeRegionSplit * sizeof(double))
     throw std::runtime_error("forces observer: checkpoint state has " + std::to_string(state.size()) +
                              " bytes, expected " + std::to_string(sizeof v));
   std::memcpy(v, state.data(), state.size());
@@ -166,7 +210,13 @@ void CuttingForcesObserver::restore_checkpoint_state(std::string_view state) {
   steady_start_impulse_.reset();
   if (v[4] != 0.0) steady_start_impulse_ = Vec2(v[5], v[6]);
   // An older state has no friction-work sums: they are complete only if its steady window had not begun.
-  friction_work_known_ = state.size() == sizeof v ? v[27] >= 0.0 : v[4] == 0.0;
+  friction_work_known_ = state.size() >= kStateSizeBeforeRegionSplit * sizeof(double) ? v[27] >= 0.0 : v[4] == 0.0;
+  region_split_known_ = state.size() == sizeof v ? v[28] != 0.0 : v[4] == 0.0;
+  steady_sums_.edge_normal = Vec2(v[29], v[30]);
+  steady_sums_.edge_friction = Vec2(v[31], v[32]);
+  steady_sums_.flank_normal = Vec2(v[33], v[34]);
+  steady_sums_.flank_friction = Vec2(v[35], v[36]);
+  steady_sums_.flank_length_time = v[37];
   steady_mid_impulse_.reset();
   if (state.size() >= 24 * sizeof(double)) {
     steady_mid_time_ = v[20];
@@ -227,6 +277,24 @@ void CuttingForcesObserver::at_finish(const Simulation& sim, nlohmann::json& sum
           {"definition",
            "steady-window mean tool force less the flat rake face's normal and friction force (rake_face), in the "
            "cutting and thrust directions: what the edge arc and the flank carry"}};
+      if (region_split_known_) {
+        // Where on the tool that force acts, and how much of it is the contacts' normal push (ploughing under the
+        // edge, the machined surface springing back against the flank) or their friction.
+        nlohmann::json& ef = summary["edge_and_flank"];
+        ef["edge_arc"] = region_forces(r.edge_normal, r.edge_friction, r.time);
+        ef["flank"] = region_forces(r.flank_normal, r.flank_friction, r.time);
+        ef["flank"]["contact_length_m"] = r.flank_length_time / r.time;
+        ef["flank"]["contact_length_mm"] = 1e3 * r.flank_length_time / r.time;
+        const Vec2 rest = mean - rake_force - (r.edge_normal + r.edge_friction + r.flank_normal + r.flank_friction) / r.time;
+        ef["unattributed"] = {{"cutting_force_N_per_mm", rest.x() * kPerMm}, {"thrust_force_N_per_mm", rest.y() * kPerMm}};
+        ef["definition"] = ef["definition"].get<std::string>() +
+            ". edge_arc and flank: the same means of the contact impulses on the tool on the edge arc and on the flank "
+            "(a contact whose tool normal is within 2.6 degrees of the flank's, past the arc), each split into its "
+            "normal_part (the contact's push along the tool's normal) and friction_part (along the surface); "
+            "flank.contact_length: time mean of the largest distance along the flank, from the end of the arc, at "
+            "which the contact pushed the material; unattributed: edge_and_flank less the two (contacts on the rake "
+            "face that pulled, and any tool force outside the contact records), near zero";
+      }
       // Where the frictional work is done: per unit tool travel (J/m per m = N/m), so that it compares with
       // the friction force; its ratio to the friction force is the force-weighted slip speed.
       if (friction_work_known_) {

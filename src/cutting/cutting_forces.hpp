@@ -18,7 +18,7 @@ inline constexpr double kSteadyDriftWarningPercent = 10.0;
 // The flat rake face's force on the tool in the (cutting, thrust) directions, from its normal force
 // (pushing the tool along the face's inward normal) and its friction force (positive up the face), for a
 // rake angle in degrees (the face of cutting/tool_geometry.cpp). The tool force less this is what the
-// edge arc and the flank carry (summary.json edge_and_flank).
+// edge arc and the flank carry (summary.json edge_and_flank, split into edge_arc and flank).
 inline Vec2 rake_face_force_on_tool(double normal, double friction, double rake_angle_deg) {
   const double a = rake_angle_deg * 3.14159265358979323846 / 180.0;
   return normal * Vec2(std::cos(a), -std::sin(a)) + friction * Vec2(std::sin(a), std::cos(a));
@@ -59,10 +59,16 @@ class CuttingForcesObserver final : public RunObserver {
     double safeguard_normal = 0.0; // part of `normal` from the particle safeguard (no friction there)
     double friction_work = 0.0;    // frictional dissipation on the flat rake face, J/m
     double tool_friction_work = 0.0;  // ... anywhere on the tool (rake face, edge arc, flank), J/m
+    // The rest of the contact, by where it acts: impulses on the tool from the normal and the friction part
+    // of each contact, on the edge arc and on the flank, N s/m; the flank's contact length x dt, m s.
+    Vec2 edge_normal = Vec2::Zero(), edge_friction = Vec2::Zero();
+    Vec2 flank_normal = Vec2::Zero(), flank_friction = Vec2::Zero();
+    double flank_length_time = 0.0;
     void add(const RakeSums& o);
   };
   RakeSums row_sums_, steady_sums_;
   bool friction_work_known_ = true;  // false after resuming a checkpoint written before the friction-work sums
+  bool region_split_known_ = true;   // false after resuming one written before the edge/flank split
   double last_contact_length_ = 0.0;  // m, last step
 };
 

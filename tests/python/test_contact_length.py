@@ -19,6 +19,12 @@ mu = 0.35 and at mu = 0. Checks:
 - steady_window.drift (second half's mean force minus the first half's, % of the mean or of half the mean resultant
   where that is larger) agrees with the same
   difference computed from the rows of forces.csv (a sign or definition error would differ by its size);
+- edge_and_flank.edge_arc and .flank (where on the tool that rest acts, each split into the contacts' normal and
+  friction part): together they are the whole rest (unattributed < 1e-9 of the force, penalty and node contact);
+  at mu = 0 their friction parts vanish; the edge arc's normal push lies in the fan of the arc's normals; with a
+  1-degree clearance and a 10 um edge (the flank rubs the machined surface) the flank's normal push is along the
+  flank's normal (Fc = -tan(clearance) Ft), its friction along the flank, at most mu times the normal push, and its
+  contact length is positive;
 - the frictional work per unit travel on the rake face and on the edge and flank: both >= 0, their sum over the
   steady window's travel is the energy ledger's friction work over the window (history.csv; the preset's penalty
   contact and node detection), the rake face's mean slip speed is below the cutting speed (the chip, thicker than t0, flows up a
@@ -40,10 +46,10 @@ def fail(msg):
     sys.exit(1)
 
 
-def run(binary, scratch, mu, detection=None):
-    name = f"mu{mu}" + (f"_{detection}" if detection else "")
+def run(binary, scratch, mu, detection=None, extra=()):
+    name = f"mu{mu}" + (f"_{detection}" if detection else "") + ("_flank" if extra else "")
     out = os.path.join(scratch, name)
-    settings = ["--set", f"cutting.friction={mu}"]
+    settings = ["--set", f"cutting.friction={mu}"] + [a for kv in extra for a in ("--set", kv)]
     if detection:
         settings += ["--set", f'solver.contact_detection="{detection}"']
     p = subprocess.run([binary, "run", CASE, "--out", out, "--force", "--threads", "1", "--no-progress",
@@ -91,6 +97,50 @@ def check_friction_work(summary, speed, label):
         fail(f"{label}: rake mean slip speed {rake['mean_slip_speed_m_per_s']} m/s not in (0, {speed}) m/s")
 
 
+def check_regions(summary, label, mu):
+    """edge_and_flank's split into the edge arc and the flank, each into its normal and friction part."""
+    rest = summary["edge_and_flank"]
+    edge, flank, left = rest["edge_arc"], rest["flank"], rest["unattributed"]
+    scale = math.hypot(summary["mean_cutting_force_N_per_mm"], summary["mean_thrust_force_N_per_mm"])
+    clearance = math.radians(summary["cutting"]["clearance_angle_deg"])
+    print(f"{label}: edge arc Fc {edge['cutting_force_N_per_mm']:.3f} Ft {edge['thrust_force_N_per_mm']:.3f}, flank Fc "
+          f"{flank['cutting_force_N_per_mm']:.3f} Ft {flank['thrust_force_N_per_mm']:.3f} N/mm (normal part "
+          f"{flank['normal_part']}), flank contact {flank['contact_length_mm'] * 1e3:.2f} um, unattributed {left}")
+    for part in (edge, flank):
+        for key in ("cutting_force_N_per_mm", "thrust_force_N_per_mm"):
+            if abs(part["normal_part"][key] + part["friction_part"][key] - part[key]) > 1e-9 * scale:
+                fail(f"{label}: normal + friction part != the region's {key}: {part}")
+    if max(abs(left["cutting_force_N_per_mm"]), abs(left["thrust_force_N_per_mm"])) > 1e-9 * scale:
+        fail(f"{label}: the edge arc and flank do not add up to edge_and_flank: unattributed {left}")
+    if mu == 0.0:
+        for part in (edge, flank):
+            if math.hypot(*part["friction_part"].values()) > 1e-9 * scale:
+                fail(f"{label}: mu = 0 but friction part {part['friction_part']}")
+    # The arc's normals fan from the rake face's (push straight back) to the flank's (up, forward by the clearance).
+    n = edge["normal_part"]
+    if n["thrust_force_N_per_mm"] < 0 or \
+            n["cutting_force_N_per_mm"] < -math.tan(clearance) * n["thrust_force_N_per_mm"] - 1e-9 * scale:
+        fail(f"{label}: edge arc's normal push {n} outside the fan of its normals")
+    return flank, clearance
+
+
+def check_flank(summary, mu):
+    """A flank that rubs: its normal push along its normal, its friction along it and within Coulomb's bound."""
+    flank, clearance = check_regions(summary, "1-degree clearance, 10 um edge", mu)
+    n, t = flank["normal_part"], flank["friction_part"]
+    normal, friction = math.hypot(*n.values()), math.hypot(*t.values())
+    if not normal > 1e-3 * summary["mean_thrust_force_N_per_mm"] or flank["contact_length_m"] <= 0:
+        fail(f"1-degree clearance: the flank carries no load ({flank})")
+    # On the flat flank a contact's normal is the flank's; one on the arc within the 2.6-degree band deviates less.
+    if abs(n["cutting_force_N_per_mm"] / n["thrust_force_N_per_mm"] + math.tan(clearance)) > 0.25 * math.tan(clearance):
+        fail(f"flank normal push {n} is not along the flank's normal (Fc/Ft = -tan(clearance) = {-math.tan(clearance):.4f})")
+    if friction > 0 and abs(t["thrust_force_N_per_mm"] / t["cutting_force_N_per_mm"] - math.tan(clearance)) > \
+            0.25 * math.tan(clearance):
+        fail(f"flank friction {t} is not along the flank (Ft/Fc = tan(clearance) = {math.tan(clearance):.4f})")
+    if friction > mu * normal * (1 + 1e-6):
+        fail(f"flank friction {friction:.4f} N/mm above mu = {mu} times its normal push {normal:.4f} N/mm")
+
+
 def main(binary, scratch):
     shutil.rmtree(scratch, ignore_errors=True)
     os.makedirs(scratch)
@@ -128,7 +178,11 @@ def main(binary, scratch):
 
     check_drift(summary, rows)
     check_friction_work(summary, 20.0, "penalty contact (the preset's)")
-    check_friction_work(run(binary, scratch, 0.35, "node")[0], 20.0, "node contact")
+    summary_node = run(binary, scratch, 0.35, "node")[0]
+    check_friction_work(summary_node, 20.0, "node contact")
+    check_regions(summary, "penalty contact", 0.35)
+    check_regions(summary_node, "node contact", 0.35)
+    check_flank(run(binary, scratch, 0.35, extra=("cutting.clearance_angle_deg=1", "cutting.edge_radius=10e-6"))[0], 0.35)
 
     summary0, _ = run(binary, scratch, 0.0)
     for part in ("rake_face", "edge_and_flank"):
@@ -143,6 +197,7 @@ def main(binary, scratch):
     # Fc >= -tan(c) Ft (penalty contact on this coarse grid: the springback under the flank gives a small negative
     # Fc); and the rake face (rake 0: its normal force is along the cutting direction, no friction) plus the rest is
     # the whole force.
+    check_regions(summary0, "mu = 0", 0.0)
     rest = summary0["edge_and_flank"]
     clearance = math.radians(summary0["cutting"]["clearance_angle_deg"])
     print(f"mu = 0: edge and flank carry Fc {rest['cutting_force_N_per_mm']:.2f}, Ft {rest['thrust_force_N_per_mm']:.2f} "
