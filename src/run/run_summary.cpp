@@ -286,6 +286,17 @@ ToolForceSplit tool_force_split(const RunSummary& s) {
   t.edge_flank_friction_work_N_per_mm =
       section_number(s.sections, "edge_and_flank", "friction_work_per_travel_N_per_mm");
   t.rake_slip_speed_m_per_s = section_number(s.sections, "rake_face", "mean_slip_speed_m_per_s");
+  if (s.sections.contains("edge_and_flank") && s.sections["edge_and_flank"].is_object()) {
+    const json& ef = s.sections["edge_and_flank"];
+    const auto thrust = [&](const char* region, const char* part) {
+      return ef.contains(region) && ef[region].is_object() ? section_number(ef[region], part, "thrust_force_N_per_mm")
+                                                           : std::nullopt;
+    };
+    t.edge_arc_normal_thrust_N_per_mm = thrust("edge_arc", "normal_part");
+    t.edge_arc_friction_thrust_N_per_mm = thrust("edge_arc", "friction_part");
+    t.flank_normal_thrust_N_per_mm = thrust("flank", "normal_part");
+    t.flank_friction_thrust_N_per_mm = thrust("flank", "friction_part");
+  }
   const std::optional<double> rake_angle = section_number(s.sections, "cutting", "rake_angle_deg");
   if (t.rake_normal_N_per_mm && t.rake_friction_N_per_mm && rake_angle && s.mean_cutting_force_N_per_mm &&
       s.mean_thrust_force_N_per_mm) {

@@ -109,6 +109,10 @@ struct ToolForceSplit {
   // Frictional work per unit tool travel on the rake face and on the rest of the tool (N/mm), and the
   // rake face's friction-force-weighted slip speed (m/s); none in summaries written before them.
   std::optional<double> rake_friction_work_N_per_mm, edge_flank_friction_work_N_per_mm, rake_slip_speed_m_per_s;
+  // The edge arc's and the flank's thrust from the contacts' normal push and from their friction (N/mm); none
+  // in summaries written before edge_and_flank had edge_arc and flank.
+  std::optional<double> edge_arc_normal_thrust_N_per_mm, edge_arc_friction_thrust_N_per_mm;
+  std::optional<double> flank_normal_thrust_N_per_mm, flank_friction_thrust_N_per_mm;
 };
 ToolForceSplit tool_force_split(const RunSummary& s);
 // steady_window.drift: the second half's mean force minus the first half's, % of the mean (Fc, Ft).

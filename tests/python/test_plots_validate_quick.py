@@ -21,7 +21,9 @@ Checks:
 - The report's arithmetic: validation_errors.csv, validation_goals.csv and validation_trends.csv recomputed here
   from validation_runs.csv and the data file (errors, worst, slope of Fc over ln v, signs, goals met).
 - validation_runs.csv splits each force into the rake face's part and the edge and flank's (they add up to Fc and
-  Ft; the edge and flank's thrust is positive).
+  Ft; the edge and flank's thrust is positive), and that thrust into the edge arc's and the flank's normal and
+  friction parts (they add up to it); its tool-chip interface temperature lies above room temperature and at or
+  below the run's maximum.
 - --chip-observations: a user's chip-type file gives the chip conditions (h, angles and edge radius from its rows),
   validation.csv says whether each simulated chip is the observed one; bad files exit 2 with file, line, column.
 - validation.csv has Fc/Ft/Ft/Fc/t_c rows with the measured means; chip-type rows; validation.md states b = 1 mm,
@@ -98,6 +100,14 @@ def check_arithmetic(out):
         if abs(split[0] + split[2] - fc) > 1e-3 * abs(fc) or abs(split[1] + split[3] - ft) > 1e-3 * abs(fc) or \
                 split[3] <= 0:
             fail(f"{r['condition']}: rake {split[:2]} + edge/flank {split[2:]} != (Fc, Ft) = ({fc}, {ft})")
+        # ... and the edge arc's and flank's thrust, each from the contacts' normal push and friction, add up to it.
+        parts = [float(r[k]) for k in ("edge_arc_normal_thrust_N_per_mm", "edge_arc_friction_thrust_N_per_mm",
+                                       "flank_normal_thrust_N_per_mm", "flank_friction_thrust_N_per_mm")]
+        if abs(sum(parts) - split[3]) > 1e-3 * abs(fc):
+            fail(f"{r['condition']}: edge arc + flank thrust parts {parts} != edge/flank thrust {split[3]}")
+        if not 298.0 < float(r["tool_chip_interface_max_K"]) <= float(r["max_temperature_K"]) + 1e-6:
+            fail(f"{r['condition']}: tool-chip interface max {r['tool_chip_interface_max_K']} K outside "
+                 f"(298, max temperature {r['max_temperature_K']}] K")
         err["Fc"].append(abs(fc / float(m["Fc_mean_N"]) - 1))
         err["Ft"].append(abs(ft / float(m["Ff_mean_N"]) - 1))
         err["Ft/Fc"].append(abs((ft / fc) / (float(m["Ff_mean_N"]) / float(m["Fc_mean_N"])) - 1))
