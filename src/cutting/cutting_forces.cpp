@@ -17,8 +17,9 @@ namespace mpmcut {
 
 namespace {
 constexpr double kPerMm = 1e-3;  // N/m -> N/mm
-constexpr int kStateSize = 38;  // doubles in the checkpoint state
+constexpr int kStateSize = 41;  // doubles in the checkpoint state
 constexpr int kStateSizeBeforeRegionSplit = 28;
+constexpr int kStateSizeBeforeToolHeat = 38;
 
 std::vector<std::string> force_columns() {
   return {"time_s",
@@ -93,6 +94,7 @@ void CuttingForcesObserver::RakeSums::add(const RakeSums& o) {
   flank_normal += o.flank_normal;
   flank_friction += o.flank_friction;
   flank_length_time += o.flank_length_time;
+  tool_heat += o.tool_heat;
 }
 
 void CuttingForcesObserver::after_step(const Simulation& sim) {
@@ -135,6 +137,8 @@ void CuttingForcesObserver::after_step(const Simulation& sim) {
   }
   step.length_time = length * step.time;
   step.flank_length_time = flank_length * step.time;
+  step.tool_heat = sim.last_step_heat_to_rigid_bodies() + (1.0 - c_.friction_heat_share) * step.tool_friction_work;
+  run_tool_heat_ += step.tool_heat;
   last_contact_length_ = length;
   row_sums_.add(step);
   if (steady_start_impulse_) steady_sums_.add(step);
@@ -186,7 +190,8 @@ std::string CuttingForcesObserver::checkpoint_state() const {
                                 region_split_known_ ? 1.0 : 0.0,
                                 b.edge_normal.x(), b.edge_normal.y(), b.edge_friction.x(), b.edge_friction.y(),
                                 b.flank_normal.x(), b.flank_normal.y(), b.flank_friction.x(), b.flank_friction.y(),
-                                b.flank_length_time};
+                                b.flank_length_time,
+                                tool_heat_known_ ? 1.0 : 0.0, b.tool_heat, run_tool_heat_};
   return std::string(reinterpret_cast<const char*>(v), sizeof v);
 }
 
@@ -194,10 +199,12 @@ void CuttingForcesObserver::restore_checkpoint_state(std::string_view state) {
   // A checkpoint written before the rake-face sums (7 values) resumes with those sums at zero, one
   // written before the window's midpoint (20 values) without the steadiness check, one written before
   // the friction-work sums (24 values) without them (summary.json then leaves them out), one written before the
-  // edge/flank split (28 values) without it. Only the steady window's split is kept (forces.csv has none).
+  // edge/flank split (28 values) without it, one written before the tool-heat sums (38 values) without those.
+  // Only the steady window's split and tool heat are kept (forces.csv has neither).
   double v[kStateSize] = {};
   if (state.size() != sizeof v && state.size() != 7 * sizeof(double) && state.size() != 20 * sizeof(double) &&
-      state.size() != 24 * sizeof(double) && state.size() != kStateSizeBeforeRegionSplit * sizeof(double))
+      state.size() != 24 * sizeof(double) && state.size() != kStateSizeBeforeRegionSplit * sizeof(double) &&
+      state.size() != kStateSizeBeforeToolHeat * sizeof(double))
     throw std::runtime_error("forces observer: checkpoint state has " + std::to_string(state.size()) +
                              " bytes, expected " + std::to_string(sizeof v));
   std::memcpy(v, state.data(), state.size());
@@ -211,7 +218,11 @@ void CuttingForcesObserver::restore_checkpoint_state(std::string_view state) {
   if (v[4] != 0.0) steady_start_impulse_ = Vec2(v[5], v[6]);
   // An older state has no friction-work sums: they are complete only if its steady window had not begun.
   friction_work_known_ = state.size() >= kStateSizeBeforeRegionSplit * sizeof(double) ? v[27] >= 0.0 : v[4] == 0.0;
-  region_split_known_ = state.size() == sizeof v ? v[28] != 0.0 : v[4] == 0.0;
+  region_split_known_ = state.size() >= kStateSizeBeforeToolHeat * sizeof(double) ? v[28] != 0.0 : v[4] == 0.0;
+  // Before the tool-heat sums: the run's total is lost (unknown), the window's too if it had begun.
+  tool_heat_known_ = state.size() == sizeof v && v[38] != 0.0;
+  steady_sums_.tool_heat = v[39];
+  run_tool_heat_ = v[40];
   steady_sums_.edge_normal = Vec2(v[29], v[30]);
   steady_sums_.edge_friction = Vec2(v[31], v[32]);
   steady_sums_.flank_normal = Vec2(v[33], v[34]);
@@ -315,6 +326,21 @@ void CuttingForcesObserver::at_finish(const Simulation& sim, nlohmann::json& sum
             "on the face (sticking counts as zero slip); null where the net friction does not drag the tool up the face "
             "(material flowing down a strongly negative rake face)";
       }
+    }
+    if (tool_heat_known_ && r.time > 0.0) {
+      // The tool's share of the heat: over the steady window, against the tool's work there (mean Fc x travel).
+      const double work = mean.x() * r.time * c_.cutting_speed;
+      summary["tool_heat"] = {
+          {"heat_into_tool_J_per_m", run_tool_heat_},
+          {"steady_window_heat_into_tool_J_per_m", r.tool_heat},
+          {"steady_window_share_of_tool_work", work > 0.0 ? nlohmann::json(r.tool_heat / work) : nlohmann::json(nullptr)},
+          {"tool_heat_transfer_coefficient_W_per_m2K", c_.tool_heat_transfer_coefficient},
+          {"friction_heat_share", c_.friction_heat_share},
+          {"definition",
+           "heat that flowed from the workpiece into the tool (its heat sink at tool_temperature, through "
+           "tool_heat_transfer_coefficient) plus the frictional heat the workpiece does not take ((1 - "
+           "friction_heat_share) of the frictional work): over the whole run, and over the steady window, there also "
+           "as a share of the tool's work (mean cutting force x travel); 0 for an adiabatic tool"}};
     }
     summary["steady_window"] = {{"start_time_s", steady_start_time_},
                                 {"end_time_s", sim.time()},

@@ -64,11 +64,16 @@ class CuttingForcesObserver final : public RunObserver {
     Vec2 edge_normal = Vec2::Zero(), edge_friction = Vec2::Zero();
     Vec2 flank_normal = Vec2::Zero(), flank_friction = Vec2::Zero();
     double flank_length_time = 0.0;
+    // Heat into the tool, J/m: conducted into its heat sink (tool_heat_transfer_coefficient), and the frictional
+    // heat the workpiece does not take (friction_heat_share < 1).
+    double tool_heat = 0.0;
     void add(const RakeSums& o);
   };
   RakeSums row_sums_, steady_sums_;
   bool friction_work_known_ = true;  // false after resuming a checkpoint written before the friction-work sums
   bool region_split_known_ = true;   // false after resuming one written before the edge/flank split
+  bool tool_heat_known_ = true;      // false after resuming one written before the tool-heat sums
+  double run_tool_heat_ = 0.0;       // heat into the tool since the start of the run, J/m
   double last_contact_length_ = 0.0;  // m, last step
 };
 

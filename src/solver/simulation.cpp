@@ -204,6 +204,7 @@ void Simulation::update_stress(double dt) {
 }
 
 void Simulation::heat_particles(double dt) {
+  last_sink_heat_ = 0.0;
   if (contact_.has_friction())
     state_.energy.heat += deposit_frictional_heat(particles_, grid_, shapes_, scene_.materials, contact_.heated_nodes(),
                                                   deposited_heat_, parallel_);
@@ -212,7 +213,8 @@ void Simulation::heat_particles(double dt) {
     // that flows into them leaves the material; like the heat through fixed-temperature boundaries it
     // is not part of the mechanical energy ledger.
     if (heat_transfer_) mark_heat_sinks(grid_, scene_.rigid_bodies, contact_, state_.rigid_bodies);
-    conduct_heat(particles_, grid_, shapes_, scene_.materials, colouring_, parallel_, *elapsed, conduction_scratch_);
+    last_sink_heat_ =
+        conduct_heat(particles_, grid_, shapes_, scene_.materials, colouring_, parallel_, *elapsed, conduction_scratch_);
   }
 }
 

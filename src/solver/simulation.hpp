@@ -44,6 +44,9 @@ class Simulation {
   double time() const { return state_.time; }
   long step_count() const { return state_.step; }
   double last_dt() const { return state_.last_dt; }
+  // Heat that flowed from the material into the rigid bodies' heat sinks (heat_transfer_coefficient > 0) in the
+  // last step, J/m: nonzero only on steps that end with a conduction update. Observers sum it (not checkpointed).
+  double last_step_heat_to_rigid_bodies() const { return last_sink_heat_; }
 
   // Everything besides the particles that the next step depends on (checkpoints write it), and
   // putting it back (a restart; the particles through particles()). The state must come from a
@@ -104,6 +107,7 @@ class Simulation {
   bool parallel_ = true;
   double stable_dt_ = 0.0;    // this step's stable step, before landing on an output time (penalty springs)
   bool conduct_now_ = false;  // this step ends with a conduction update (P2G maps temperatures)
+  double last_sink_heat_ = 0.0;  // J/m into the rigid bodies' heat sinks in the last step
   Particles particles_;
   RestartState state_;
   // Scratch, reused every step

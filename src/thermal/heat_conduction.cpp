@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "core/deterministic_sum.hpp"
 #include "core/stencil.hpp"
 
 namespace mpmcut {
@@ -27,7 +28,7 @@ std::optional<double> SubcycledConduction::end_step(ConductionSubcycle& s, doubl
   return elapsed;
 }
 
-void conduct_heat(Particles& P, Grid& G, std::span<const ShapeFunction> body_shapes,
+double conduct_heat(Particles& P, Grid& G, std::span<const ShapeFunction> body_shapes,
                   const std::vector<MaterialParameters>& materials, const StripColouring& colouring, bool parallel,
                   double dt, ConductionScratch& scratch) {
   const std::size_t n = P.size();
@@ -126,6 +127,17 @@ void conduct_heat(Particles& P, Grid& G, std::span<const ShapeFunction> body_sha
   // fixed-temperature node are not bounded: heat enters there from outside the body (the face holds
   // its value), so their increment may leave the range of the old temperatures around them; bounding
   // it holds the first cell back as the face heats it (erfc test at 100 cells: 0.016 -> 1.5 %).
+  // Heat into the sinks: at a sink node C dT = dt (heat rate + g (T_sink - T - dT)), and the heat rates sum to
+  // zero, so the particles lose sum g (T + dT - T_sink) dt to the sinks (less the bound's cut shares, below).
+  double sink_heat = 0.0;
+  if (sinks) {
+    sink_heat = deterministic_sum(nn, [&](std::size_t node) {
+      const double g = G.sink_conductance[node];
+      return g > 0.0 && G.heat_capacity[node] > 0.0 && !(G.fixed[node] & 4)
+                 ? g * (G.temperature[node] + dT[node] - G.sink_temperature[node]) * dt
+                 : 0.0;
+    }, parallel);
+  }
   std::vector<double>& cut_heat = scratch.cut_heat;  // heat added by the bound, J per particle (per unit depth)
   cut_heat.assign(n, 0.0);
   int any_cut = 0;
@@ -148,18 +160,23 @@ void conduct_heat(Particles& P, Grid& G, std::span<const ShapeFunction> body_sha
       any_cut = 1;
     }
   }
-  if (!any_cut) return;
+  if (!any_cut) return sink_heat;
   // Nodal shares of the heat cut, and the heat capacity of the particles not cut (strips: no races).
   std::vector<double>& node_cut = range_lo;  // reused
   std::vector<double>& uncut_capacity = range_hi;
   std::fill(node_cut.begin(), node_cut.end(), 0.0);
   std::fill(uncut_capacity.begin(), uncut_capacity.end(), 0.0);
+  std::vector<double>& sink_cut = scratch.sink_cut;
+  if (sinks) sink_cut.assign(nn, 0.0);
   colouring.for_each(parallel, [&](std::size_t p) {
     const double mc = P.mass[p] * materials[P.material[p]].specific_heat;
     for_each_stencil_weight(G, particle_stencil(G, body_shapes, P, p), [&](int node, double w) {
       if (cut_heat[p] != 0.0) {
         // At a sink node the tool took or gave that heat: it does so that much less.
-        if (!(sinks && G.sink_conductance[node] > 0.0)) node_cut[node] += w * cut_heat[p];
+        if (sinks && G.sink_conductance[node] > 0.0)
+          sink_cut[node] += w * cut_heat[p];
+        else
+          node_cut[node] += w * cut_heat[p];
       } else
         uncut_capacity[node] += w * mc;
     });
@@ -178,6 +195,8 @@ void conduct_heat(Particles& P, Grid& G, std::span<const ShapeFunction> body_sha
     });
     P.temperature[p] += dTp;
   }
+  if (sinks) sink_heat -= deterministic_sum(nn, [&](std::size_t node) { return sink_cut[node]; }, parallel);
+  return sink_heat;
 }
 
 }  // namespace mpmcut

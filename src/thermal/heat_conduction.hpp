@@ -57,6 +57,7 @@ struct ConductionScratch {
   // J/(m^2 m) (empty where no node is fixed).
   std::vector<Vec2> face_offset;
   std::vector<Vec2> face_gradient;
+  std::vector<double> sink_cut;  // per sink node: the shares of the heat the bound cut there, J/m
 };
 
 // One explicit conduction update over dt: nodal temperatures (from P2G) and heat capacities, the
@@ -67,8 +68,9 @@ struct ConductionScratch {
 // would take a particle outside the range of the temperatures around it (the old ones of the
 // particles sharing its nodes, its nodes' new and sink temperatures) is cut back to it, and the heat
 // cut is taken from the particles that share the nodes (conservative). `colouring` holds this
-// step's strips (particles not moved since P2G).
-void conduct_heat(Particles& particles, Grid& grid, std::span<const ShapeFunction> body_shapes,
+// step's strips (particles not moved since P2G). Returns the heat that flowed into the heat sinks (rigid
+// bodies with a heat transfer coefficient) over dt, J/m: what the particles lost to them, exactly.
+double conduct_heat(Particles& particles, Grid& grid, std::span<const ShapeFunction> body_shapes,
                   const std::vector<MaterialParameters>& materials, const StripColouring& colouring, bool parallel,
                   double dt, ConductionScratch& scratch);
 

@@ -25,6 +25,10 @@ mu = 0.35 and at mu = 0. Checks:
   1-degree clearance and a 10 um edge (the flank rubs the machined surface) the flank's normal push is along the
   flank's normal (Fc = -tan(clearance) Ft), its friction along the flank, at most mu times the normal push, and its
   contact length is positive;
+- tool_heat (the heat into the tool): exactly 0 for the preset's adiabatic tool that leaves all frictional heat to
+  the workpiece; with friction_heat_share = 0.5 the steady window's heat into the tool is half the ledger's frictional
+  work over the window (3 %); a heat sink (tool_heat_transfer_coefficient = 1e6 W/(m^2 K)) adds conducted heat to
+  that, and the share of the tool's work is the window's heat over mean Fc x travel;
 - the frictional work per unit travel on the rake face and on the edge and flank: both >= 0, their sum over the
   steady window's travel is the energy ledger's friction work over the window (history.csv; the preset's penalty
   contact and node detection), the rake face's mean slip speed is below the cutting speed (the chip, thicker than t0, flows up a
@@ -47,7 +51,7 @@ def fail(msg):
 
 
 def run(binary, scratch, mu, detection=None, extra=()):
-    name = f"mu{mu}" + (f"_{detection}" if detection else "") + ("_flank" if extra else "")
+    name = f"mu{mu}" + (f"_{detection}" if detection else "") + ("_" + "_".join(kv.replace("cutting.", "").replace("=", "") for kv in extra) if extra else "")
     out = os.path.join(scratch, name)
     settings = ["--set", f"cutting.friction={mu}"] + [a for kv in extra for a in ("--set", kv)]
     if detection:
@@ -95,6 +99,35 @@ def check_friction_work(summary, speed, label):
         fail(f"{label}: rake + edge and flank friction work {per_travel:.4f} N/mm vs the ledger's {ledger:.4f} N/mm")
     if not 0.0 < rake["mean_slip_speed_m_per_s"] < speed:
         fail(f"{label}: rake mean slip speed {rake['mean_slip_speed_m_per_s']} m/s not in (0, {speed}) m/s")
+
+
+def check_tool_heat(binary, scratch, adiabatic):
+    heat = adiabatic["tool_heat"]
+    if heat["heat_into_tool_J_per_m"] != 0.0 or heat["steady_window_share_of_tool_work"] != 0.0:
+        fail(f"adiabatic tool, all frictional heat to the workpiece, but tool_heat {heat}")
+    halves = run(binary, scratch, 0.35, extra=("cutting.friction_heat_share=0.5",))[0]
+    sink = run(binary, scratch, 0.35, extra=("cutting.friction_heat_share=0.5",
+                                             "cutting.tool_heat_transfer_coefficient=1e6"))[0]
+    w = halves["steady_window"]
+    ledger = ledger_friction_work(halves["_history"], w["start_time_s"], w["end_time_s"])
+    got = halves["tool_heat"]["steady_window_heat_into_tool_J_per_m"]
+    print(f"tool heat: half the frictional heat {got:.5f} J/m (ledger friction work over the window {ledger:.5f} "
+          f"J/m); with the sink {sink['tool_heat']}")
+    if abs(got - 0.5 * ledger) > 0.03 * 0.5 * ledger:
+        fail(f"friction_heat_share 0.5: heat into the tool {got} J/m is not half the window's friction work {ledger} J/m")
+    if not halves["tool_heat"]["heat_into_tool_J_per_m"] >= got > 0:
+        fail(f"the run's heat into the tool {halves['tool_heat']} is below its steady window's")
+    t = sink["tool_heat"]
+    friction_part = 0.5 * ledger_friction_work(sink["_history"], sink["steady_window"]["start_time_s"],
+                                               sink["steady_window"]["end_time_s"])
+    if not t["steady_window_heat_into_tool_J_per_m"] > 1.05 * friction_part:
+        fail(f"a 1e6 W/(m^2 K) sink adds no conducted heat: {t} vs friction part {friction_part} J/m")
+    sw = sink["steady_window"]
+    work = sink["mean_cutting_force_N_per_mm"] * 1e3 * (sw["end_tool_travel_m"] - sw["start_tool_travel_m"])
+    if abs(t["steady_window_share_of_tool_work"] - t["steady_window_heat_into_tool_J_per_m"] / work) > 1e-3 * \
+            t["steady_window_share_of_tool_work"]:
+        fail(f"tool heat share {t['steady_window_share_of_tool_work']} != heat / (Fc x travel) = "
+             f"{t['steady_window_heat_into_tool_J_per_m'] / work}")
 
 
 def check_regions(summary, label, mu):
@@ -181,6 +214,7 @@ def main(binary, scratch):
     summary_node = run(binary, scratch, 0.35, "node")[0]
     check_friction_work(summary_node, 20.0, "node contact")
     check_regions(summary, "penalty contact", 0.35)
+    check_tool_heat(binary, scratch, summary)
     check_regions(summary_node, "node contact", 0.35)
     check_flank(run(binary, scratch, 0.35, extra=("cutting.clearance_angle_deg=1", "cutting.edge_radius=10e-6"))[0], 0.35)
 

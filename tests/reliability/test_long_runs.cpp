@@ -395,7 +395,7 @@ TEST_F(LongRuns, CutResumedInsideItsSteadyWindowKeepsTheToolResults) {
   ASSERT_TRUE(expected["rake_face"].contains("friction_work_per_travel_N_per_mm")) << expected.dump(2);
   ASSERT_TRUE(expected["edge_and_flank"].contains("edge_arc")) << expected.dump(2);  // the split survives a resume
   for (const char* key : {"mean_cutting_force_N_per_mm", "mean_thrust_force_N_per_mm", "tool_chip_contact_length_m",
-                          "rake_face", "edge_and_flank", "steady_window"})
+                          "rake_face", "edge_and_flank", "tool_heat", "steady_window"})
     EXPECT_EQ(actual.at(key), expected.at(key)) << key;
 }
 
