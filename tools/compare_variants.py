@@ -51,7 +51,7 @@ def row(variant, run_dir, meas_by_condition):
     scene = tomllib.loads((run_dir / "scene.toml").read_text())
     tool = scene["rigid_body"][0]
     d = json.loads((run_dir / "summary.json").read_text())
-    e, t, rf = d["energy_J_per_m"], d["temperature"], d["rake_face"]
+    e, t, rf, ef = d["energy_J_per_m"], d["temperature"], d["rake_face"], d.get("edge_and_flank", {})
     fc, ft = d["mean_cutting_force_N_per_mm"], d["mean_thrust_force_N_per_mm"]
     key = (round(d["cutting"]["uncut_chip_thickness_m"] * 1e3, 4), round(d["cutting"]["cutting_speed_m_per_min"], 1))
     meas = meas_by_condition.get(key, {})
@@ -84,12 +84,19 @@ def row(variant, run_dir, meas_by_condition):
         "rake_friction_N_per_mm": round(rf["friction_force_N_per_mm"], 1),
         # Older records have no edge-and-flank split (blank).
         "edge_flank_cutting_N_per_mm": round(d["edge_and_flank"]["cutting_force_N_per_mm"], 1) if "edge_and_flank" in d else "",
+        # Newer records split it further: the edge arc's normal push and the flank's thrust (blank before).
+        "edge_arc_normal_thrust_N_per_mm": round(ef["edge_arc"]["normal_part"]["thrust_force_N_per_mm"], 1)
+        if "edge_arc" in ef else "",
+        "flank_thrust_N_per_mm": round(ef["flank"]["thrust_force_N_per_mm"], 1) if "flank" in ef else "",
         "rake_friction_to_normal": round(rf["friction_to_normal_ratio"], 3),
         "rake_sliding_share_of_normal": round(rf["sliding_share_of_normal_force"], 2),
         "contact_length_um": round(d["tool_chip_contact_length_mm"] * 1e3),
         "friction_work_J_per_m": round(e["friction_work"], 1),
         "damage_share_of_tool_work": round(d["fracture"]["energy_partition"]["damage"], 3),
         "energy_residual_percent": round(100 * d["energy_balance"]["relative_residual"], 2),
+        # The tool's share of the heat over the steady window (summary.json tool_heat; blank in older records).
+        "tool_heat_share_of_work": round(d["tool_heat"]["steady_window_share_of_tool_work"], 3)
+        if d.get("tool_heat", {}).get("steady_window_share_of_tool_work") is not None else "",
     }
 
 
