@@ -156,7 +156,7 @@ void write_runs_table(const std::vector<Condition>& conditions, double kappa, co
                         "edge_arc_normal_thrust_N_per_mm", "edge_arc_friction_thrust_N_per_mm",
                         "flank_normal_thrust_N_per_mm", "flank_friction_thrust_N_per_mm", "chip_thickness_ratio", "chip_thickness_um",
                         "chip_thickness_by_area_um", "cell_size_um", "cells_per_thermal_length", "mass_scaling_factor",
-                        "max_temperature_K", "tool_chip_interface_max_K", "chip_classification", "segmentation_degree", "segmentation_degree_mean",
+                        "max_temperature_K", "tool_chip_interface_max_K", "tool_heat_share_of_work", "chip_classification", "segmentation_degree", "segmentation_degree_mean",
                         "segmentation_degree_min", "segmentation_degree_max", "wall_time_s", "source_revision", "result_dir", "message"};
   for (const Condition& c : conditions) {
     if (c.origin.empty()) continue;
@@ -182,6 +182,7 @@ void write_runs_table(const std::vector<Condition>& conditions, double kappa, co
                                format_number(c.result.cell_size_um), format_number(c.cells_per_thermal_length(kappa), 3),
                                format_number(c.result.mass_scaling_factor),
                                format_number(c.result.max_temperature_K), format_number(c.result.tool_chip_max_K),
+                               format_number(c.result.tool_heat_share, 3),
                                c.result.chip_classification,
                                format_number(c.result.segmentation_degree, 3),
                                format_number(c.result.segmentation_degree_mean, 3),

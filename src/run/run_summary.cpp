@@ -278,6 +278,10 @@ ChipHeadline chip_headline(const RunSummary& s) {
 
 std::optional<double> mass_scaling_factor(const RunSummary& s) { return section_number(s.sections, "mass_scaling", "factor"); }
 
+std::optional<double> tool_heat_share(const RunSummary& s) {
+  return section_number(s.sections, "tool_heat", "steady_window_share_of_tool_work");
+}
+
 ToolForceSplit tool_force_split(const RunSummary& s) {
   ToolForceSplit t;
   t.rake_normal_N_per_mm = section_number(s.sections, "rake_face", "normal_force_N_per_mm");

@@ -99,6 +99,8 @@ struct ChipHeadline {
 };
 ChipHeadline chip_headline(const RunSummary& s);
 std::optional<double> mass_scaling_factor(const RunSummary& s);
+// tool_heat.steady_window_share_of_tool_work: the heat into the tool over the steady window / the tool's work.
+std::optional<double> tool_heat_share(const RunSummary& s);
 // The steady-window tool force split into the flat rake face's part (rake_face: normal and friction force)
 // and the rest, carried by the edge arc and the flank, in the cutting and thrust directions; N/mm. From
 // rake_face, cutting.rake_angle_deg and the mean forces, so that summaries written before edge_and_flank

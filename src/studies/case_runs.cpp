@@ -332,6 +332,7 @@ CaseResult read_case_result(const fs::path& dir, const fs::path& log_file, int e
   if (s.cell_size_m > 0.0) r.cell_size_um = s.cell_size_m * 1e6;
   r.mass_scaling_factor = mass_scaling_factor(s);
   r.tool_force_split = tool_force_split(s);
+  r.tool_heat_share = tool_heat_share(s);
   // The tool's work and where it went (energy_J_per_m; the tool is the only rigid body of a cut).
   const EnergySummary& e = s.energy_J_per_m;
   r.tool_work_J_per_m = e.external_work;

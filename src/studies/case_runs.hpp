@@ -48,6 +48,7 @@ struct CaseResult {
   // Second half of the steady window's mean minus the first half's, % of the mean (a drifting cut).
   std::optional<double> cutting_force_drift_percent, thrust_force_drift_percent;
   std::optional<double> max_temperature_K;
+  std::optional<double> tool_heat_share;  // summary.json tool_heat: heat into the tool / tool's work, steady window
   std::optional<double> shear_zone_max_K, tool_chip_max_K;  // summary.json "temperature" (mpmcut analyze)
   std::string chip_classification;  // from summary.json "chip" (mpmcut analyze); blank if absent
   std::string chip_classification_confidence;  // "clear" | "marginal" (at a threshold) | blank

@@ -23,7 +23,7 @@ Checks:
 - validation_runs.csv splits each force into the rake face's part and the edge and flank's (they add up to Fc and
   Ft; the edge and flank's thrust is positive), and that thrust into the edge arc's and the flank's normal and
   friction parts (they add up to it); its tool-chip interface temperature lies above room temperature and at or
-  below the run's maximum.
+  below the run's maximum; the default adiabatic tool's heat share is 0.
 - --chip-observations: a user's chip-type file gives the chip conditions (h, angles and edge radius from its rows),
   validation.csv says whether each simulated chip is the observed one; bad files exit 2 with file, line, column.
 - validation.csv has Fc/Ft/Ft/Fc/t_c rows with the measured means; chip-type rows; validation.md states b = 1 mm,
@@ -105,6 +105,8 @@ def check_arithmetic(out):
                                        "flank_normal_thrust_N_per_mm", "flank_friction_thrust_N_per_mm")]
         if abs(sum(parts) - split[3]) > 1e-3 * abs(fc):
             fail(f"{r['condition']}: edge arc + flank thrust parts {parts} != edge/flank thrust {split[3]}")
+        if r["tool_heat_share_of_work"] == "" or float(r["tool_heat_share_of_work"]) != 0.0:
+            fail(f"{r['condition']}: the default adiabatic tool took heat: {r['tool_heat_share_of_work']}")
         if not 298.0 < float(r["tool_chip_interface_max_K"]) <= float(r["max_temperature_K"]) + 1e-6:
             fail(f"{r['condition']}: tool-chip interface max {r['tool_chip_interface_max_K']} K outside "
                  f"(298, max temperature {r['max_temperature_K']}] K")
