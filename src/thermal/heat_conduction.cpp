@@ -29,8 +29,8 @@ std::optional<double> SubcycledConduction::end_step(ConductionSubcycle& s, doubl
 }
 
 double conduct_heat(Particles& P, Grid& G, std::span<const ShapeFunction> body_shapes,
-                  const std::vector<MaterialParameters>& materials, const StripColouring& colouring, bool parallel,
-                  double dt, ConductionScratch& scratch) {
+                    const std::vector<MaterialParameters>& materials, const StripColouring& colouring, bool parallel,
+                    double dt, ConductionScratch& scratch) {
   const std::size_t n = P.size();
   const std::size_t nn = G.node_count();
   // The range of the old particle temperatures at each node (for the bound below).

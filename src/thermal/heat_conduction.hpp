@@ -71,7 +71,7 @@ struct ConductionScratch {
 // step's strips (particles not moved since P2G). Returns the heat that flowed into the heat sinks (rigid
 // bodies with a heat transfer coefficient) over dt, J/m: what the particles lost to them, exactly.
 double conduct_heat(Particles& particles, Grid& grid, std::span<const ShapeFunction> body_shapes,
-                  const std::vector<MaterialParameters>& materials, const StripColouring& colouring, bool parallel,
-                  double dt, ConductionScratch& scratch);
+                    const std::vector<MaterialParameters>& materials, const StripColouring& colouring, bool parallel,
+                    double dt, ConductionScratch& scratch);
 
 }  // namespace mpmcut
