@@ -39,15 +39,15 @@ std::vector<std::string> force_columns() {
 // direction up the face and outward normal, the flank's direction away from the edge (rising at the clearance
 // angle) and outward normal, the centre of the edge arc, and the tool tip (lowest point of the cutting edge, on
 // the machined surface).
-struct RakeFrame {
+struct ToolFrame {
   Vec2 up, normal, flank_dir, flank_normal, arc_centre, tip;
   double edge_radius;
 };
-RakeFrame rake_frame(const CuttingParameters& c, const Simulation& sim) {
+ToolFrame tool_frame(const CuttingParameters& c, const Simulation& sim) {
   const double deg = 3.14159265358979323846 / 180.0;
   const double a = c.rake_angle_deg * deg, g = c.clearance_angle_deg * deg;
   const RigidBodySpec& tool = sim.scene().rigid_bodies[0];
-  RakeFrame f;
+  ToolFrame f;
   f.up = Vec2(std::sin(a), std::cos(a));
   f.normal = Vec2(-std::cos(a), std::sin(a));
   f.flank_dir = Vec2(std::cos(g), std::sin(g));
@@ -103,7 +103,7 @@ void CuttingForcesObserver::after_step(const Simulation& sim) {
   // mass-weighted material position, or a particle the safeguard moved) on the rake side of the tool
   // (normal within 90 degrees of the rake face's). Rake forces: only the flat face above the edge arc.
   // Every other contact is on the flank (normal along the flank's, past the arc) or on the edge arc.
-  const RakeFrame f = rake_frame(c_, sim);
+  const ToolFrame f = tool_frame(c_, sim);
   RakeSums step;
   step.time = sim.last_dt();
   double length = 0.0, flank_length = 0.0;
