@@ -352,7 +352,15 @@ void add_validate_command(CLI::App& app) {
            ThermalOption{"--tool-temperature", &o->tool_temperature,
                          "The tool's constant temperature, K, where it exchanges heat (default: the workpiece's "
                          "initial temperature)",
-                         1.0, 1e4}})
+                         1.0, 1e4},
+           ThermalOption{"--tool-conductivity", &o->tool_conductivity,
+                         "A conducting tool: its thermal conductivity, W/(m K) (default: none, the tool stays at its "
+                         "temperature; needs --tool-heat-transfer-coefficient; [cutting] tool_conductivity)",
+                         0.0, 1e4},
+           ThermalOption{"--tool-volumetric-heat-capacity", &o->tool_volumetric_heat_capacity,
+                         "A conducting tool's rho c, J/(m^3 K) (default 0: a steady tool; [cutting] "
+                         "tool_volumetric_heat_capacity)",
+                         0.0, 1e9}})
     v->add_option(t.name, *t.value, t.help)->check(CLI::Range(t.lo, t.hi));
   v->callback([o]() { finish_command([&] { return run_study([&] { return run_validation(*o); }); }); });
 }

@@ -120,7 +120,8 @@ ConditionRunSettings run_settings(const Options& o) {
         {"--cells-per-thermal-length", o.cells_per_thermal_length}, {"--friction", o.friction},
         {"--friction-heat-share", o.friction_heat_share},
         {"--tool-heat-transfer-coefficient", o.tool_heat_transfer_coefficient},
-        {"--tool-temperature", o.tool_temperature}})
+        {"--tool-temperature", o.tool_temperature}, {"--tool-conductivity", o.tool_conductivity},
+        {"--tool-volumetric-heat-capacity", o.tool_volumetric_heat_capacity}})
     if (value && !std::isfinite(*value)) throw InputError(fmt::format("{} {}: a finite number is needed", option, *value));
   ConditionRunSettings s;
   s.quick = o.quick;
@@ -150,6 +151,8 @@ ConditionRunSettings run_settings(const Options& o) {
   s.friction_heat_share = o.friction_heat_share;
   s.tool_heat_transfer_coefficient = o.tool_heat_transfer_coefficient;
   s.tool_temperature = o.tool_temperature;
+  s.tool_conductivity = o.tool_conductivity;
+  s.tool_volumetric_heat_capacity = o.tool_volumetric_heat_capacity;
   s.contact_detection = o.contact_detection;
   s.volumetric_average = o.volumetric_average;
   return s;

@@ -37,6 +37,7 @@ struct Options {
   std::optional<double> friction;  // Coulomb coefficient; none: the default (0.35)
   std::optional<double> friction_heat_share;  // none: the preset's (all frictional heat into the workpiece)
   std::optional<double> tool_heat_transfer_coefficient, tool_temperature;  // none: an adiabatic tool
+  std::optional<double> tool_conductivity, tool_volumetric_heat_capacity;  // none: a tool at its temperature
   std::string contact_detection;  // empty: the preset's (penalty contact)
   std::string volumetric_average;  // empty: the preset's (off)
   // --measurements: a force file of the user's in the layout of data/experiments (then the matrix is its rows, without

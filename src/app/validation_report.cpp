@@ -503,6 +503,13 @@ std::string assumptions_section(const ReportParts& r) {
                                                     : std::string("the initial temperature"),
                           *settings.tool_heat_transfer_coefficient)
             : std::string("; the tool surface is adiabatic"))
+    << (settings.tool_conductivity
+            ? fmt::format("; the tool conducts heat ({:g} W/(m K), {}; held at its temperature on its back and top)",
+                          *settings.tool_conductivity,
+                          settings.tool_volumetric_heat_capacity && *settings.tool_volumetric_heat_capacity > 0.0
+                              ? fmt::format("transient, {:g} J/(m³ K)", *settings.tool_volumetric_heat_capacity)
+                              : std::string("steady"))
+            : std::string())
     << "; contact detection: "
     << (settings.contact_detection.empty() ? contact_detection_name(kCuttingPresetContact) + " (the preset's)"
                                            : settings.contact_detection + " (--contact-detection)")

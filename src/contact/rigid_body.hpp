@@ -1,6 +1,7 @@
 #pragma once
 // A rigid body's motion and the force the deformable bodies exert on it through contact.
 #include <string>
+#include <vector>
 
 #include "core/tensor.hpp"
 
@@ -14,6 +15,10 @@ struct RigidBodyState {
   Vec2 impulse = Vec2::Zero();       // N s per m, accumulated
   Vec2 step_impulse = Vec2::Zero();  // N s per m, this step (both contact passes and the safeguard)
   double work = 0.0;                 // J per m: work done BY the rigid body on the material
+  // A conducting body's temperature per cell (solver/rigid_body_heat), K, and for a steady one the heat input per
+  // cell averaged over its heat_averaging_time, W/m; empty for the others.
+  std::vector<double> temperature_field;
+  std::vector<double> heat_input_average;
 };
 
 }  // namespace mpmcut

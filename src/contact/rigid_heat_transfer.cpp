@@ -10,12 +10,16 @@ bool any_heat_transfer(const std::vector<RigidBodySpec>& bodies) {
 }
 
 void mark_heat_sinks(Grid& G, const std::vector<RigidBodySpec>& specs, const RigidContact& contact,
-                     const std::vector<RigidBodyState>& bodies) {
+                     const std::vector<RigidBodyState>& bodies, const SurfaceTemperature& surface_temperature) {
   G.sink_conductance.assign(G.node_count(), 0.0);
   G.sink_temperature.assign(G.node_count(), 0.0);
   for (std::size_t r = 0; r < specs.size(); ++r) {
-    const double h_c = specs[r].heat_transfer_coefficient;
-    if (h_c <= 0.0) continue;
+    if (specs[r].heat_transfer_coefficient <= 0.0) continue;
+    // A conducting body's temperature is its surface cell's, half a cell (h/2) inside its outline: that half
+    // cell's resistance h / (2 k) is in series with the contact's.
+    const double h_c = specs[r].conductivity > 0.0
+                           ? 1.0 / (1.0 / specs[r].heat_transfer_coefficient + 0.5 * G.h / specs[r].conductivity)
+                           : specs[r].heat_transfer_coefficient;
     const RigidPolygon& geom = contact.geometry(r);
     const Vec2 shift = bodies[r].displacement;
     const auto [i0, i1, j0, j1] = nodes_near_body(geom, shift, G);
@@ -24,12 +28,16 @@ void mark_heat_sinks(Grid& G, const std::vector<RigidBodySpec>& specs, const Rig
         const int n = G.index(i, j);
         if (G.heat_capacity[n] <= 0.0) continue;  // no material at the node
         Vec2 normal;
-        const double d = geom.signed_distance(G.node_position(i, j) - shift, normal);
+        const Vec2 x_body = G.node_position(i, j) - shift;
+        const double d = geom.signed_distance(x_body, normal);
         const double w = 1.0 - std::abs(d) / G.h;
         if (w <= 0.0) continue;
         // Two bodies at one node: one sink at their conductance-weighted temperature.
         const double g_body = w * h_c * G.h, g = G.sink_conductance[n] + g_body;
-        G.sink_temperature[n] = (G.sink_conductance[n] * G.sink_temperature[n] + g_body * specs[r].temperature) / g;
+        const double T_body = surface_temperature && specs[r].conductivity > 0.0
+                                  ? surface_temperature(r, n, x_body, d, normal, g_body)
+                                  : specs[r].temperature;
+        G.sink_temperature[n] = (G.sink_conductance[n] * G.sink_temperature[n] + g_body * T_body) / g;
         G.sink_conductance[n] = g;
       }
     }

@@ -35,6 +35,8 @@ struct Grid {
   // on the steps that conduct; empty when no rigid body exchanges heat.
   std::vector<double> sink_conductance;
   std::vector<double> sink_temperature;
+  // Heat each sink node gave to the rigid bodies in the last conduction update, J/m (filled by conduct_heat).
+  std::vector<double> sink_heat;
   // Boundary flags: bit 0 = x velocity fixed, bit 1 = y velocity fixed; bits 2.. = fixed temperature
   std::vector<std::uint8_t> in_contact;  // 1 where rigid contact acted after the momentum update
   std::vector<std::uint8_t> fixed;

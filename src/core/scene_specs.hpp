@@ -81,6 +81,16 @@ struct RigidBodySpec {
   // it, W/(m^2 K); 0 = an adiabatic surface. The body itself stays at `temperature` (a heat sink).
   double heat_transfer_coefficient = 0.0;
   double temperature = 298.0;  // K, uniform and constant; used where heat_transfer_coefficient > 0
+  // A conducting body (conductivity > 0) has a temperature field of its own (thermal/body_conduction): it starts
+  // at `temperature` and is held there in its cells along the outline's edges listed in held_faces (edge k runs
+  // from vertex k to vertex k + 1, the last back to the first), where it is mounted; heat enters it from the
+  // material through heat_transfer_coefficient. 0 = the body stays at `temperature` (a heat sink).
+  // With a volumetric heat capacity the field is transient; without one (0) it is steady: the field the heat input,
+  // averaged over the last heat_averaging_time, would settle to (a tool long in the cut).
+  double conductivity = 0.0;              // W/(m K)
+  double volumetric_heat_capacity = 0.0;  // rho c, J/(m^3 K); 0 = a steady body
+  double heat_averaging_time = 0.0;       // s; > 0 for a steady conducting body
+  std::vector<int> held_faces;
 
   bool operator==(const RigidBodySpec&) const = default;  // field-wise, for round-trip tests
 };

@@ -75,6 +75,7 @@ nlohmann::json region_forces(const Vec2& normal, const Vec2& friction, double ti
 CuttingForcesObserver::CuttingForcesObserver(const CuttingParameters& c, const std::filesystem::path& result_dir,
                                              bool append)
     : c_(c),
+      result_dir_(result_dir),
       csv_(result_dir / "forces.csv", force_columns(), append ? CsvWriter::Mode::Append : CsvWriter::Mode::Create) {
   steady_start_time_ = steady_window_start_travel(c) / c.cutting_speed;
   steady_mid_time_ = 0.5 * (steady_start_time_ + c.cut_length / c.cutting_speed);
@@ -237,6 +238,37 @@ void CuttingForcesObserver::restore_checkpoint_state(std::string_view state) {
   }
 }
 
+// A conducting tool's field at the end: its hottest cell in summary.json (tool_heat.tool_temperature) and every
+// cell in tool_temperature.csv, at the tool's final position.
+void CuttingForcesObserver::write_tool_temperature(const Simulation& sim, nlohmann::json& summary) const {
+  const RigidBodyState& tool = sim.rigid_bodies()[0];
+  const BodyConduction& cells = sim.rigid_body_heat().body(0);
+  CsvWriter csv(result_dir_ / "tool_temperature.csv", {"x_m", "y_m", "temperature_K", "held"});
+  int hottest = -1;
+  for (int c = 0; c < cells.cell_count(); ++c) {
+    if (cells.kind(c) == BodyCell::Outside) continue;
+    const Vec2 x = cells.cell_centre(c) + tool.displacement;
+    csv.row({x.x(), x.y(), tool.temperature_field[c], cells.kind(c) == BodyCell::Held ? 1.0 : 0.0});
+    if (hottest < 0 || tool.temperature_field[c] > tool.temperature_field[hottest]) hottest = c;
+  }
+  csv.flush();
+  const RigidBodySpec& spec = sim.scene().rigid_bodies[0];
+  const Vec2 at = cells.cell_centre(hottest) + tool.displacement;
+  summary["tool_heat"]["tool_temperature"] = {
+      {"max_K", tool.temperature_field[hottest]},
+      {"max_at_m", {at.x(), at.y()}},
+      {"conductivity_W_per_mK", spec.conductivity},
+      {"mode", spec.volumetric_heat_capacity > 0.0 ? "transient" : "steady"},
+      {"volumetric_heat_capacity_J_per_m3K", spec.volumetric_heat_capacity},
+      {"heat_averaging_time_s", spec.heat_averaging_time},
+      {"cells", "tool_temperature.csv"},
+      {"definition",
+       "the conducting tool's temperature field at the end of the run (its cells in tool_temperature.csv, at the "
+       "tool's final position; held = 1 where the tool is held at tool_temperature, its back and top): steady = the "
+       "field its heat input, averaged over heat_averaging_time, settles to; transient = from tool_temperature with "
+       "its heat capacity"}};
+}
+
 void CuttingForcesObserver::at_finish(const Simulation& sim, nlohmann::json& summary) {
   const RigidBodyState& tool = sim.rigid_bodies()[0];
   nlohmann::json inputs = {{"material", c_.material},
@@ -337,11 +369,12 @@ void CuttingForcesObserver::at_finish(const Simulation& sim, nlohmann::json& sum
           {"tool_heat_transfer_coefficient_W_per_m2K", c_.tool_heat_transfer_coefficient},
           {"friction_heat_share", c_.friction_heat_share},
           {"definition",
-           "heat that flowed from the workpiece into the tool (its heat sink at tool_temperature, through "
-           "tool_heat_transfer_coefficient) plus the frictional heat the workpiece does not take ((1 - "
+           "heat that flowed from the workpiece into the tool (through tool_heat_transfer_coefficient: into its heat "
+           "sink at tool_temperature, or into a conducting tool's field, tool_temperature below) plus the frictional heat the workpiece does not take ((1 - "
            "friction_heat_share) of the frictional work): over the whole run, and over the steady window, there also "
            "as a share of the tool's work (mean cutting force x travel); 0 for an adiabatic tool"}};
     }
+    if (!tool.temperature_field.empty()) write_tool_temperature(sim, summary);
     summary["steady_window"] = {{"start_time_s", steady_start_time_},
                                 {"end_time_s", sim.time()},
                                 {"start_tool_travel_m", steady_start_time_ * c_.cutting_speed},

@@ -40,7 +40,10 @@ class CuttingForcesObserver final : public RunObserver {
   void restore_checkpoint_state(std::string_view state) override;
 
  private:
+  void write_tool_temperature(const Simulation& sim, nlohmann::json& summary) const;
+
   CuttingParameters c_;
+  std::filesystem::path result_dir_;
   CsvWriter csv_;
   double last_row_time_ = 0.0;
   Vec2 last_row_impulse_ = Vec2::Zero();

@@ -66,6 +66,22 @@ CuttingParameters read_cutting_parameters(TableReader& t) {
             c.tool_heat_transfer_coefficient);
   // The tool starts, and stays, at the workpiece's initial temperature unless told otherwise.
   c.tool_temperature = t.number("tool_temperature", c.initial_temperature, Range::open(0.0, 1e4, "K"));
+  c.tool_conductivity = t.number("tool_conductivity", c.tool_conductivity,
+                                 Range::closed(0.0, 1e4, "W/(m K)", "0 = the tool stays at tool_temperature"));
+  c.tool_volumetric_heat_capacity =
+      t.number("tool_volumetric_heat_capacity", c.tool_volumetric_heat_capacity,
+               Range::closed(0.0, 1e9, "J/(m^3 K)", "rho c of a conducting tool; 0 = a steady tool"));
+  if (c.tool_conductivity > 0.0) {
+    t.check("tool_conductivity", c.tool_heat_transfer_coefficient > 0.0,
+            "0 unless tool_heat_transfer_coefficient > 0 (the heat enters the tool through it)", c.tool_conductivity);
+    t.check("tool_conductivity", c.friction_heat_share == 1.0,
+            "0 unless friction_heat_share = 1: a conducting tool takes its part of the frictional heat by conduction "
+            "from the workpiece's surface",
+            c.tool_conductivity);
+  } else {
+    t.check("tool_volumetric_heat_capacity", c.tool_volumetric_heat_capacity == 0.0,
+            "0 unless tool_conductivity > 0 (only a conducting tool stores heat)", c.tool_volumetric_heat_capacity);
+  }
   c.chip_room = t.number("chip_room", c.chip_room, Range::closed(0.0, 1.0, "m", "0 = automatic"));
   c.snapshots = static_cast<int>(t.integer("snapshots", c.snapshots, Range::closed(1, 10000)));
   if (const toml::node* n = t.node("mass_scaling")) {

@@ -21,7 +21,12 @@ struct CuttingParameters {
   double friction = 0.35;            // Coulomb mu, tool-chip, -
   double friction_heat_share = 1.0;  // share of the frictional heat that goes into the workpiece (rest: tool), -
   double tool_heat_transfer_coefficient = 0.0;  // W/(m^2 K) tool-workpiece; 0 = adiabatic tool surface
-  double tool_temperature = 298.0;   // K, the tool's (uniform, constant); [cutting] default: initial_temperature
+  double tool_temperature = 298.0;   // K, the tool's (uniform, constant; a conducting tool's start and held faces); [cutting] default: initial_temperature
+  // A conducting tool (docs/cutting.md "Contact" item 7): its conductivity, W/(m K) (0 = the tool stays at
+  // tool_temperature), and its volumetric heat capacity, J/(m^3 K) (0 = a steady tool: the field its heat input,
+  // averaged over kSteadyToolAveragingFraction of the cut, settles to; > 0 = transient from tool_temperature).
+  double tool_conductivity = 0.0;
+  double tool_volumetric_heat_capacity = 0.0;
   double initial_temperature = 298.0;// K
   double cell_size = 0.0;            // h, m; 0 = t0 / 10
   int particles_per_cell = 2;        // per direction
@@ -43,5 +48,10 @@ struct CuttingParameters {
 // (steady_window_start_travel) and the chip cut during it is left out of the segmentation metrics
 // (ChipThresholds::entry_travel_t0, docs/analysis.md).
 inline constexpr double kEntryTravelT0 = 3.0;
+
+// A steady conducting tool follows its heat input averaged over this fraction of the cut's duration: long against
+// a conduction update (the exchange stays stable), short against the entry transient (the steady window, from 0.4
+// of the cut, sees the tool of the cut's own heat input).
+inline constexpr double kSteadyToolAveragingFraction = 0.05;
 
 }  // namespace mpmcut

@@ -214,6 +214,14 @@ RigidBodySpec make_cutting_tool(const CuttingParameters& c, const ToolPlacement&
   // Its temperature matters only where it exchanges heat (and an adiabatic tool's scene stays the
   // text it was before the tool had one).
   if (c.tool_heat_transfer_coefficient > 0.0) tool.temperature = c.tool_temperature;
+  if (c.tool_conductivity > 0.0) {
+    tool.conductivity = c.tool_conductivity;
+    tool.volumetric_heat_capacity = c.tool_volumetric_heat_capacity;
+    // Held where the insert sits in its holder: the back (edge 1 of the outline) and the top (edge 2).
+    tool.held_faces = {1, 2};
+    if (c.tool_volumetric_heat_capacity <= 0.0)
+      tool.heat_averaging_time = kSteadyToolAveragingFraction * c.cut_length / c.cutting_speed;
+  }
   return tool;
 }
 

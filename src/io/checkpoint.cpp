@@ -42,6 +42,7 @@ struct RigidLayout {
   std::string name;
   Vec2 a, b, c, d, e;
   double f;
+  std::vector<double> g, h;  // the conducting bodies' fields: section rigid_body_temperatures
 };
 static_assert(sizeof(RigidBodyState) == sizeof(RigidLayout),
               "RigidBodyState gained or lost a field: update the rigid-body section in io/checkpoint.cpp");
@@ -296,6 +297,16 @@ void write_checkpoint_file(const fs::path& file, const Simulation& sim, std::uin
     rigid.f64(r.work);
   }
   w.section("rigid_bodies", rigid);
+  // Conducting bodies' temperature fields (a section of its own: checkpoints from before it read without it).
+  Bytes fields;
+  fields.u64(state.rigid_bodies.size());
+  for (const RigidBodyState& r : state.rigid_bodies) {
+    for (const auto* v : {&r.temperature_field, &r.heat_input_average}) {
+      fields.u64(v->size());
+      for (const double x : *v) fields.f64(x);
+    }
+  }
+  w.section("rigid_body_temperatures", fields);
 
   Bytes energy;
   for (const double* e : energy_fields(state.energy)) energy.f64(*e);
@@ -440,6 +451,19 @@ Checkpoint decode_checkpoint(std::string_view bytes, const std::string& name) {
       s.step_impulse = r.vec();
       s.work = r.f64();
       c.state.rigid_bodies.push_back(s);
+    }
+    finish(r);
+  }
+  if (sections.count("rigid_body_temperatures")) {
+    Reader r = section("rigid_body_temperatures");
+    if (r.u64() != c.state.rigid_bodies.size()) r.fail("holds fields for another number of rigid bodies");
+    for (RigidBodyState& s : c.state.rigid_bodies) {
+      for (auto* v : {&s.temperature_field, &s.heat_input_average}) {
+        const std::uint64_t cells = r.u64();
+        if (cells > payload.size() / sizeof(double)) r.fail("implausible cell count");
+        v->resize(cells);
+        for (double& x : *v) x = r.f64();
+      }
     }
     finish(r);
   }

@@ -539,6 +539,58 @@ void check_friction_heat(TableReader& t, const Scene& scene) {
   }
 }
 
+// A conducting rigid body (conductivity > 0): its heat capacity and the outline's edges where it is held.
+void read_body_conduction(TableReader& t, RigidBodySpec& r) {
+  r.conductivity = t.number("conductivity", r.conductivity,
+                            Range::closed(0.0, 1e4, "W/(m K)", "0 = the body stays at its temperature"));
+  r.volumetric_heat_capacity = t.number("volumetric_heat_capacity", r.volumetric_heat_capacity,
+                                        Range::closed(0.0, 1e9, "J/(m^3 K)", "rho c; 0 = a steady body"));
+  r.heat_averaging_time = t.number("heat_averaging_time", r.heat_averaging_time,
+                                   Range::closed(0.0, 1e6, "s", "a steady body follows its heat input averaged so"));
+  const std::size_t edges = r.polygon.vertices.size();
+  if (const toml::node* n = t.node("held_faces")) {
+    const toml::array* list = n->as_array();
+    if (!list) t.fail("held_faces", "must be a list of the outline's edge indices, e.g. [1, 2], got " + describe_value(*n));
+    for (const toml::node& e : *list) {
+      const auto k = e.value_exact<std::int64_t>();
+      if (!k || *k < 0 || *k >= static_cast<std::int64_t>(edges))
+        t.fail("held_faces", fmt::format("lists edges of the outline by index, integers in [0, {}] (edge k runs from "
+                                         "polygon vertex k to k + 1), got {}",
+                                         edges - 1, describe_value(e)));
+      r.held_faces.push_back(static_cast<int>(*k));
+    }
+  }
+  if (r.conductivity <= 0.0) {
+    t.check("volumetric_heat_capacity", r.volumetric_heat_capacity == 0.0,
+            "0 unless conductivity > 0 (only a conducting body stores heat)", r.volumetric_heat_capacity);
+    t.check("heat_averaging_time", r.heat_averaging_time == 0.0,
+            "0 unless conductivity > 0 (it belongs to a steady conducting body)", r.heat_averaging_time);
+    if (!r.held_faces.empty())
+      t.fail("held_faces", "holds the faces of a conducting body at its temperature: give conductivity > 0, or leave "
+                           "held_faces out");
+    return;
+  }
+  if (r.volumetric_heat_capacity > 0.0)
+    t.check("heat_averaging_time", r.heat_averaging_time == 0.0,
+            "0 for a transient body (volumetric_heat_capacity > 0); only a steady one averages its heat input",
+            r.heat_averaging_time);
+  else
+    t.check("heat_averaging_time", r.heat_averaging_time > 0.0,
+            "> 0 s for a steady conducting body (volumetric_heat_capacity = 0): its field follows the heat input "
+            "averaged over this time",
+            r.heat_averaging_time);
+  t.check("conductivity", r.friction_heat_share == 1.0 || r.friction == 0.0,
+          "0 unless friction_heat_share = 1 (a conducting body takes its part of the frictional heat by conduction "
+          "from the material's surface)",
+          r.conductivity);
+  t.check("conductivity", r.heat_transfer_coefficient > 0.0,
+          "0 unless heat_transfer_coefficient > 0 (heat enters a conducting body only through it)", r.conductivity);
+  t.check("conductivity", !r.held_faces.empty(),
+          "0 unless held_faces lists the faces where the body is held at its temperature (without one it would "
+          "only heat up)",
+          r.conductivity);
+}
+
 RigidBodySpec read_rigid_body(TableReader t, bool conduction) {
   RigidBodySpec r;
   t.require_key("name", "identifies the rigid body in outputs (forces)");
@@ -558,6 +610,7 @@ RigidBodySpec read_rigid_body(TableReader t, bool conduction) {
     t.check("heat_transfer_coefficient", conduction,
             "0 unless thermal.conduction = true (the heat it takes is part of the conduction update)",
             r.heat_transfer_coefficient);
+  read_body_conduction(t, r);
   t.reject_unknown_keys();
   return r;
 }

@@ -156,6 +156,14 @@ void write_scene_tables(const Scene& s, std::ostream& out) {
     if (r.heat_transfer_coefficient != 0.0)
       out << "heat_transfer_coefficient = " << num(r.heat_transfer_coefficient) << "\n";
     if (r.temperature != RigidBodySpec{}.temperature) out << "temperature = " << num(r.temperature) << "\n";
+    if (r.conductivity != 0.0) {
+      out << "conductivity = " << num(r.conductivity) << "\n";
+      out << "volumetric_heat_capacity = " << num(r.volumetric_heat_capacity) << "\n";
+      if (r.heat_averaging_time != 0.0) out << "heat_averaging_time = " << num(r.heat_averaging_time) << "\n";
+      out << "held_faces = [";
+      for (std::size_t k = 0; k < r.held_faces.size(); ++k) out << (k ? ", " : "") << r.held_faces[k];
+      out << "]\n";
+    }
   }
 }
 

@@ -14,6 +14,7 @@
 
 #include "contact/frictional_heating.hpp"
 #include "contact/rigid_heat_transfer.hpp"
+#include "solver/rigid_body_heat.hpp"
 #include "core/cell_order.hpp"
 #include "core/deterministic_sum.hpp"
 #include "solver/fixed_step_limit.hpp"
@@ -53,6 +54,8 @@ Simulation::Simulation(const Scene& scene) : scene_(scene) {
   contact.penalty_stiffness = scene_.solver.penalty_stiffness;
   contact_ = RigidContact(scene_.rigid_bodies, contact);
   heat_transfer_ = any_heat_transfer(scene_.rigid_bodies);
+  body_heat_ = RigidBodyHeat(scene_.rigid_bodies, grid_.h);
+  body_heat_.start(state_.rigid_bodies);
   mark_boundary_nodes(scene_.boundaries, scene_.thermal, grid_);
   refresh_energy();
   state_.energy.initial = state_.energy.kinetic + state_.energy.elastic;
@@ -84,6 +87,7 @@ void Simulation::restore(const RestartState& state) {
   if (state.rigid_bodies.size() != state_.rigid_bodies.size())
     throw std::invalid_argument("restart state has " + std::to_string(state.rigid_bodies.size()) +
                                 " rigid bodies, the scene " + std::to_string(state_.rigid_bodies.size()));
+  body_heat_.check(state.rigid_bodies);
   state_ = state;
 }
 
@@ -212,9 +216,15 @@ void Simulation::heat_particles(double dt) {
     // Rigid bodies with a heat transfer coefficient are heat sinks on their surface nodes. The heat
     // that flows into them leaves the material; like the heat through fixed-temperature boundaries it
     // is not part of the mechanical energy ledger.
-    if (heat_transfer_) mark_heat_sinks(grid_, scene_.rigid_bodies, contact_, state_.rigid_bodies);
+    if (heat_transfer_) {
+      mark_heat_sinks(grid_, scene_.rigid_bodies, contact_, state_.rigid_bodies,
+                      body_heat_.any() ? body_heat_.surface_temperature(state_.rigid_bodies) : SurfaceTemperature{});
+      if (body_heat_.any()) body_heat_.couple_implicitly(grid_, *elapsed);
+    }
     last_sink_heat_ =
         conduct_heat(particles_, grid_, shapes_, scene_.materials, colouring_, parallel_, *elapsed, conduction_scratch_);
+    // A conducting body takes that heat into its cells under the nodes and conducts it towards its held faces.
+    if (body_heat_.any()) body_heat_.deposit_and_advance(grid_, state_.rigid_bodies, *elapsed);
   }
 }
 

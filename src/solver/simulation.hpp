@@ -19,6 +19,7 @@
 #include "physics/material.hpp"
 #include "solver/guards.hpp"
 #include "solver/restart_state.hpp"
+#include "solver/rigid_body_heat.hpp"
 #include "solver/volumetric_average.hpp"
 #include "thermal/heat_conduction.hpp"
 
@@ -47,6 +48,8 @@ class Simulation {
   // Heat that flowed from the material into the rigid bodies' heat sinks (heat_transfer_coefficient > 0) in the
   // last step, J/m: nonzero only on steps that end with a conduction update. Observers sum it (not checkpointed).
   double last_step_heat_to_rigid_bodies() const { return last_sink_heat_; }
+  // The conducting rigid bodies' cells (their fields are in rigid_bodies()[r].temperature_field).
+  const RigidBodyHeat& rigid_body_heat() const { return body_heat_; }
 
   // Everything besides the particles that the next step depends on (checkpoints write it), and
   // putting it back (a restart; the particles through particles()). The state must come from a
@@ -98,6 +101,7 @@ class Simulation {
   std::vector<std::unique_ptr<Material>> materials_;
   RigidContact contact_;
   bool heat_transfer_ = false;  // a rigid body exchanges heat with the material (conduction steps)
+  RigidBodyHeat body_heat_;     // the conducting rigid bodies' temperature fields
   SubcycledConduction conduction_;
   double node_mass_cutoff_ = 0.0;  // nodes lighter than this count as empty, kg/m
   double inertia_factor_ = 1.0;    // mass scaling f: inertial mass = f x mass

@@ -354,6 +354,11 @@ std::string condition_case_text(const CuttingCondition& c, const ConditionRunSet
                      *o.tool_heat_transfer_coefficient);
   if (o.tool_temperature)
     s += fmt::format("tool_temperature = {}  # K, chosen with --tool-temperature\n", *o.tool_temperature);
+  if (o.tool_conductivity)
+    s += fmt::format("tool_conductivity = {}  # W/(m K), chosen with --tool-conductivity\n", *o.tool_conductivity);
+  if (o.tool_volumetric_heat_capacity)
+    s += fmt::format("tool_volumetric_heat_capacity = {}  # J/(m^3 K), chosen with --tool-volumetric-heat-capacity\n",
+                     *o.tool_volumetric_heat_capacity);
   s += fmt::format("cell_size = {}  # {}\n", cell,
                    o.quick ? "quick: t0/4 (pipeline check, not converged)"
                    : o.cells_per_thermal_length > 0.0

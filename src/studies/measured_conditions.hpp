@@ -119,6 +119,9 @@ struct ConditionRunSettings {
   // Heat transfer coefficient to the tool, W/(m^2 K), and its temperature, K; none: an adiabatic tool.
   std::optional<double> tool_heat_transfer_coefficient;
   std::optional<double> tool_temperature;
+  // A conducting tool's conductivity, W/(m K), and volumetric heat capacity, J/(m^3 K); none: not conducting.
+  std::optional<double> tool_conductivity;
+  std::optional<double> tool_volumetric_heat_capacity;
   int snapshots = 0;        // VTU snapshots of each run; 0: 2 with quick, else 20
   // solver.contact_detection of every case (a name as the case file spells it); empty: the preset's, and the
   // case text stays as it was before the option existed (committed run records still match).

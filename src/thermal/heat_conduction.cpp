@@ -131,12 +131,15 @@ double conduct_heat(Particles& P, Grid& G, std::span<const ShapeFunction> body_s
   // zero, so the particles lose sum g (T + dT - T_sink) dt to the sinks (less the bound's cut shares, below).
   double sink_heat = 0.0;
   if (sinks) {
-    sink_heat = deterministic_sum(nn, [&](std::size_t node) {
+    G.sink_heat.resize(nn);
+#pragma omp parallel for schedule(static) if (parallel)
+    for (std::size_t node = 0; node < nn; ++node) {
       const double g = G.sink_conductance[node];
-      return g > 0.0 && G.heat_capacity[node] > 0.0 && !(G.fixed[node] & 4)
-                 ? g * (G.temperature[node] + dT[node] - G.sink_temperature[node]) * dt
-                 : 0.0;
-    }, parallel);
+      G.sink_heat[node] = g > 0.0 && G.heat_capacity[node] > 0.0 && !(G.fixed[node] & 4)
+                              ? g * (G.temperature[node] + dT[node] - G.sink_temperature[node]) * dt
+                              : 0.0;
+    }
+    sink_heat = deterministic_sum(nn, [&](std::size_t node) { return G.sink_heat[node]; }, parallel);
   }
   std::vector<double>& cut_heat = scratch.cut_heat;  // heat added by the bound, J per particle (per unit depth)
   cut_heat.assign(n, 0.0);
@@ -195,7 +198,10 @@ double conduct_heat(Particles& P, Grid& G, std::span<const ShapeFunction> body_s
     });
     P.temperature[p] += dTp;
   }
-  if (sinks) sink_heat -= deterministic_sum(nn, [&](std::size_t node) { return sink_cut[node]; }, parallel);
+  if (sinks) {
+    sink_heat -= deterministic_sum(nn, [&](std::size_t node) { return sink_cut[node]; }, parallel);
+    for (std::size_t node = 0; node < nn; ++node) G.sink_heat[node] -= sink_cut[node];
+  }
   return sink_heat;
 }
 

@@ -69,7 +69,8 @@ struct ConductionScratch {
 // particles sharing its nodes, its nodes' new and sink temperatures) is cut back to it, and the heat
 // cut is taken from the particles that share the nodes (conservative). `colouring` holds this
 // step's strips (particles not moved since P2G). Returns the heat that flowed into the heat sinks (rigid
-// bodies with a heat transfer coefficient) over dt, J/m: what the particles lost to them, exactly.
+// bodies with a heat transfer coefficient) over dt, J/m: what the particles lost to them, exactly; grid.sink_heat
+// holds it node by node.
 double conduct_heat(Particles& particles, Grid& grid, std::span<const ShapeFunction> body_shapes,
                     const std::vector<MaterialParameters>& materials, const StripColouring& colouring, bool parallel,
                     double dt, ConductionScratch& scratch);

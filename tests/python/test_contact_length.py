@@ -28,7 +28,10 @@ mu = 0.35 and at mu = 0. Checks:
 - tool_heat (the heat into the tool): exactly 0 for the preset's adiabatic tool that leaves all frictional heat to
   the workpiece; with friction_heat_share = 0.5 the steady window's heat into the tool is half the ledger's frictional
   work over the window (3 %); a heat sink (tool_heat_transfer_coefficient = 1e6 W/(m^2 K)) adds conducted heat to
-  that, and the share of the tool's work is the window's heat over mean Fc x travel;
+  that, and the share of the tool's work is the window's heat over mean Fc x travel; a conducting tool
+  (tool_conductivity = 86 W/(m K), steady) warms up and so takes less heat than the sink at 298 K, more than none;
+  its field (tool_temperature.csv) is 298 K in its held cells, above it where it touches the chip, and its hottest
+  cell (summary tool_heat.tool_temperature.max_K) is not hotter than the workpiece's hottest particle;
 - the frictional work per unit travel on the rake face and on the edge and flank: both >= 0, their sum over the
   steady window's travel is the energy ledger's friction work over the window (history.csv; the preset's penalty
   contact and node detection), the rake face's mean slip speed is below the cutting speed (the chip, thicker than t0, flows up a
@@ -128,6 +131,32 @@ def check_tool_heat(binary, scratch, adiabatic):
             t["steady_window_share_of_tool_work"]:
         fail(f"tool heat share {t['steady_window_share_of_tool_work']} != heat / (Fc x travel) = "
              f"{t['steady_window_heat_into_tool_J_per_m'] / work}")
+    check_conducting_tool(binary, scratch)
+
+
+def check_conducting_tool(binary, scratch):
+    sink = run(binary, scratch, 0.35, extra=("cutting.tool_heat_transfer_coefficient=1e6",))[0]
+    extra = ("cutting.tool_heat_transfer_coefficient=1e6", "cutting.tool_conductivity=86")
+    warm = run(binary, scratch, 0.35, extra=extra)[0]
+    q_sink = sink["tool_heat"]["steady_window_heat_into_tool_J_per_m"]
+    q_warm = warm["tool_heat"]["steady_window_heat_into_tool_J_per_m"]
+    field = warm["tool_heat"].get("tool_temperature")
+    print(f"conducting tool: {q_warm:.5f} J/m into it over the window (sink at 298 K: {q_sink:.5f} J/m); {field}")
+    if not 0.0 < q_warm < q_sink:
+        fail(f"a conducting tool should take less heat than a 298 K sink and more than none: {q_warm} vs {q_sink} J/m")
+    if field is None or field["mode"] != "steady" or field["conductivity_W_per_mK"] != 86:
+        fail(f"summary tool_heat.tool_temperature missing or wrong: {field}")
+    if not 298.0 + 1.0 < field["max_K"] <= warm["max_temperature_K"]:
+        fail(f"the tool's hottest cell {field['max_K']} K should be above 298 K and not above the workpiece's "
+             f"{warm['max_temperature_K']} K")
+    name = "mu0.35_" + "_".join(kv.replace("cutting.", "").replace("=", "") for kv in extra)
+    with open(os.path.join(scratch, name, "tool_temperature.csv"), newline="") as f:
+        cells = list(csv.DictReader(f))
+    held = [float(c["temperature_K"]) for c in cells if c["held"] == "1"]
+    if not held or any(T != 298.0 for T in held) or len(held) * 5 > len(cells):
+        fail(f"held cells: {len(held)} of {len(cells)}, temperatures {sorted(set(held))[:5]}")
+    if abs(max(float(c["temperature_K"]) for c in cells) - field["max_K"]) > 1e-9 * field["max_K"]:
+        fail("tool_temperature.csv's hottest cell differs from summary.json's")
 
 
 def check_regions(summary, label, mu):

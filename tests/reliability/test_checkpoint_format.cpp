@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -20,7 +21,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Small but complete: JC plasticity with damage, conduction, a rigid punch with friction, gravity.
+// Small but complete: JC plasticity with damage, conduction, a rigid punch with friction that conducts heat (a
+// steady body held on its top), gravity.
 constexpr const char* kCase = R"toml(
 body_force = [0.0, -1.0e9]
 [grid]
@@ -46,6 +48,11 @@ name = "punch"
 polygon = [[0.3e-3, 0.3e-3], [0.5e-3, 0.3e-3], [0.5e-3, 0.5e-3], [0.3e-3, 0.5e-3]]
 velocity = [0.0, -150.0]
 friction = 0.3
+heat_transfer_coefficient = 1.0e7
+temperature = 600.0
+conductivity = 50.0
+heat_averaging_time = 1.0e-8
+held_faces = [2]
 )toml";
 
 template <class T>
@@ -67,7 +74,8 @@ bool same_state(const Simulation& a, const Simulation& b) {
   for (std::size_t r = 0; same && r < a.rigid_bodies().size(); ++r) {
     const RigidBodyState &s = a.rigid_bodies()[r], &t = b.rigid_bodies()[r];
     same = s.displacement == t.displacement && s.force == t.force && s.impulse == t.impulse &&
-           s.step_impulse == t.step_impulse && s.work == t.work;
+           s.step_impulse == t.step_impulse && s.work == t.work && same_bytes(s.temperature_field, t.temperature_field) &&
+           same_bytes(s.heat_input_average, t.heat_input_average);
   }
   return same;
 }
@@ -129,6 +137,9 @@ TEST_F(CheckpointFormat, RestoredSimulationContinuesBitIdentically) {
   }
   EXPECT_TRUE(same_state(straight, resumed)) << "the continuation differs after 37 steps";
   EXPECT_GT(straight.energy().plastic_work, 0.0) << "the case should exercise plasticity";
+  const std::vector<double>& punch = straight.rigid_bodies()[0].temperature_field;
+  ASSERT_FALSE(punch.empty());
+  EXPECT_LT(*std::min_element(punch.begin(), punch.end()), 600.0 - 1e-6) << "the punch should lose heat to the block";
 }
 
 TEST_F(CheckpointFormat, EveryTruncationIsRejected) {

@@ -7,6 +7,7 @@
 #include <limits>
 #include <string>
 
+#include "solver/rigid_body_heat.hpp"
 #include "contact/rigid_polygon.hpp"
 #include "cutting/cutting_scene.hpp"
 #include "cutting/tool_geometry.hpp"
@@ -205,6 +206,43 @@ TEST(CuttingScene, ToolCarriesFrictionAndHeatTransfer) {
   EXPECT_EQ(s.rigid_bodies[0].temperature, 500.0);
   c.friction_heat_share = CuttingParameters{}.friction_heat_share;  // the default: all of it
   EXPECT_EQ(build_cutting_scene(c, m).rigid_bodies[0].friction_heat_share, 1.0);
+}
+
+// A conducting tool (tool_conductivity > 0) is held on its back and top (edges 1 and 2 of the outline, the faces
+// away from the chip: every held cell lies at least 0.2 mm from the cutting edge's centre); steady unless given a
+// heat capacity, then averaging its heat input over 5 % of the cut.
+TEST(CuttingScene, ConductingToolIsHeldOnItsBackAndTop) {
+  MaterialParameters m;
+  m.name = "ti";
+  CuttingParameters c;
+  c.cutting_speed = 2.0;
+  c.uncut_chip_thickness = 0.1e-3;
+  c.cut_length = 0.6e-3;
+  c.tool_heat_transfer_coefficient = 1e6;
+  c.tool_conductivity = 86.0;
+  const Scene s = build_cutting_scene(c, m);
+  const RigidBodySpec& tool = s.rigid_bodies.at(0);
+  EXPECT_EQ(tool.conductivity, 86.0);
+  EXPECT_EQ(tool.volumetric_heat_capacity, 0.0);
+  EXPECT_DOUBLE_EQ(tool.heat_averaging_time, 0.05 * 0.6e-3 / 2.0);
+  EXPECT_EQ(tool.held_faces, (std::vector<int>{1, 2}));
+  const BodyConduction cells = make_body_conduction(tool, s.grid.cell_size);
+  const Vec2 edge_centre = tool.polygon.vertices[0];
+  int held = 0, conducting = 0;
+  for (int k = 0; k < cells.cell_count(); ++k) {
+    if (cells.kind(k) == BodyCell::Held) {
+      ++held;
+      EXPECT_GT((cells.cell_centre(k) - edge_centre).norm(), 0.2e-3) << "held cell " << k;
+    } else if (cells.kind(k) == BodyCell::Conducting) {
+      ++conducting;
+    }
+  }
+  EXPECT_GT(held, 50);
+  EXPECT_GT(conducting, 10 * held);
+  c.tool_volumetric_heat_capacity = 3e6;
+  const RigidBodySpec transient = build_cutting_scene(c, m).rigid_bodies.at(0);
+  EXPECT_EQ(transient.volumetric_heat_capacity, 3e6);
+  EXPECT_EQ(transient.heat_averaging_time, 0.0);
 }
 
 // The force window of a short cut is its last 40 %; a cut whose window lies mostly within the 3 t0 of travel that the

@@ -414,6 +414,28 @@ TEST(SceneValidation, RangesOfSolverAndThermal) {
   expect_error(edit("rectangle =", "temperature = 0\nrectangle ="), "temperature", {"key 'body[0].temperature'"});
 }
 
+// A conducting rigid body needs the heat transfer coefficient its heat enters by, a held face (else a steady body
+// heats without bound), edges that exist, and an averaging time when steady (rho c = 0).
+TEST(SceneValidation, ConductingRigidBody) {
+  const std::string conducting = edit("[solver]", "[thermal]\nconduction = true\n[solver]") +
+                                 "[[rigid_body]]\nname = \"tool\"\npolygon = [[0.6, 0.6], [0.9, 0.6], [0.6, 0.9]]\n";
+  expect_error(conducting + "conductivity = 50\nvolumetric_heat_capacity = 3e6\nheld_faces = [1]\n", "conductivity",
+               {"key 'rigid_body[0].conductivity'", "heat_transfer_coefficient > 0"});
+  const std::string touching = conducting + "heat_transfer_coefficient = 1e6\n";
+  expect_error(touching + "conductivity = 50\nvolumetric_heat_capacity = 3e6\n", "conductivity",
+               {"key 'rigid_body[0].conductivity'", "held_faces"});
+  expect_error(touching + "conductivity = 50\nvolumetric_heat_capacity = 3e6\nheld_faces = [1, 3]\n", "held_faces",
+               {"key 'rigid_body[0].held_faces'", "integers in [0, 2]", "got 3"});
+  expect_error(touching + "conductivity = 50\nheld_faces = [1]\n", "[[rigid_body]]",
+               {"key 'rigid_body[0].heat_averaging_time'", "> 0 s for a steady conducting body"});
+  expect_error(touching + "conductivity = 50\nvolumetric_heat_capacity = 3e6\nheat_averaging_time = 1e-5\nheld_faces = [1]\n",
+               "heat_averaging_time", {"key 'rigid_body[0].heat_averaging_time'", "0 for a transient body"});
+  expect_error(touching + "held_faces = [1]\n", "held_faces", {"key 'rigid_body[0].held_faces'", "conductivity > 0"});
+  expect_error(touching + "friction = 0.3\nfriction_heat_share = 0.5\nconductivity = 50\nvolumetric_heat_capacity = 3e6\nheld_faces = [1]\n",
+               "conductivity", {"key 'rigid_body[0].conductivity'", "friction_heat_share = 1"});
+  EXPECT_EQ(error_of(touching + "conductivity = 50\nheat_averaging_time = 1e-5\nheld_faces = [1]\n"), "");
+}
+
 TEST(SceneValidation, ShapeMustLieInsideTheGrid) {
   expect_error(edit("max = [0.4, 0.4] }", "max = [1.4, 0.4] }"), "rectangle",
                {"key 'body[0].rectangle'", "inside the grid domain [0, 0] to [1, 1]"});
@@ -741,6 +763,14 @@ friction_heat_share = 0.4
 heat_transfer_coefficient = 1.0e5
 temperature = 350.0
 rounding_radius = 0.05
+
+[[rigid_body]]
+name = "holder"
+polygon = [[2.5, 0.0], [3.0, 0.0], [3.0, 1.0]]
+heat_transfer_coefficient = 1.0e6
+conductivity = 50.0
+heat_averaging_time = 1.0e-5
+held_faces = [1, 2]
 )";
   const Scene s = parse_scene(text, "case.toml",
                               {"thermal.conduction=true", "thermal.top=300.5", "thermal.left=1.0e-3",
@@ -748,8 +778,9 @@ rounding_radius = 0.05
                                "solver.scheme=usl", "solver.max_steps=123", "solver.fixed_time_step=1.0e-9",
                                "solver.flip_fraction=0.95", "solver.remove_escaping_particles=true", "output.snapshot_interval=0.1", "output.vtu=false",
                                "body_force=[0.1, -9.81]", "title=\"round trip\""});
-  ASSERT_EQ(s.rigid_bodies.size(), 1u);
+  ASSERT_EQ(s.rigid_bodies.size(), 2u);
   EXPECT_DOUBLE_EQ(s.rigid_bodies[0].rounding_radius, 0.05);
+  EXPECT_EQ(s.rigid_bodies[1].held_faces, (std::vector<int>{1, 2}));
   EXPECT_TRUE(s.solver.remove_escaping_particles);
   ASSERT_TRUE(s.thermal.top.has_value());
   EXPECT_FALSE(s.thermal.bottom.has_value());
