@@ -112,6 +112,19 @@ std::vector<std::string> input_plausibility_warnings(const CuttingParameters& c,
                               "is 0 (the tool's surface is adiabatic); give the coefficient for the tool to exchange "
                               "heat with the chip",
                               c.tool_temperature));
+  if (c.tool_conductivity > 0.0 &&
+      (c.tool_conductivity < b.min_tool_conductivity_W_mK || c.tool_conductivity > b.max_tool_conductivity_W_mK))
+    out.push_back(fmt::format("cutting.tool_conductivity = {:g} W/(m K) is outside {:g}-{:g} W/(m K) (tool materials: "
+                              "about 30 for alumina, 86 for a carbide tool, 2100 for diamond): a value in W/(cm K) or in "
+                              "another unit?",
+                              c.tool_conductivity, b.min_tool_conductivity_W_mK, b.max_tool_conductivity_W_mK));
+  if (c.tool_volumetric_heat_capacity > 0.0 && (c.tool_volumetric_heat_capacity < b.min_tool_volumetric_heat_capacity ||
+                                                c.tool_volumetric_heat_capacity > b.max_tool_volumetric_heat_capacity))
+    out.push_back(fmt::format("cutting.tool_volumetric_heat_capacity = {:g} J/(m^3 K) is outside {:g}-{:g} J/(m^3 K) "
+                              "(solids: a few 1e6, e.g. 3.5e6 for iron): the specific heat in "
+                              "J/(kg K) instead of rho c (multiply by the density)?",
+                              c.tool_volumetric_heat_capacity, b.min_tool_volumetric_heat_capacity,
+                              b.max_tool_volumetric_heat_capacity));
   return out;
 }
 

@@ -41,6 +41,14 @@ struct MetalPlausibility {
   double min_thermal_conductivity_W_mK = 1.0;
   double max_thermal_conductivity_W_mK = 1000.0;
   double min_fracture_energy_J_m2 = 1.0;
+  // A conducting tool: tool materials conduct from about 20-30 W/(m K) (alumina) to 2100 (diamond), the WC phase of
+  // carbide 121 ([MitsubishiToolMaterials]), a carbide tool 86 ([SciRep2021Ti64Tool]); solids store rho c of a few
+  // 1e6 J/(m^3 K) (about 3 R per mole of atoms: iron 7874 kg/m^3 x 449 J/(kg K) = 3.5e6, [CRC2016]), so a specific
+  // heat in J/(kg K) given as rho c is a thousand times too small.
+  double min_tool_conductivity_W_mK = 5.0;
+  double max_tool_conductivity_W_mK = 2500.0;
+  double min_tool_volumetric_heat_capacity = 5e5;
+  double max_tool_volumetric_heat_capacity = 1e7;
   // Below: a temperature in degrees Celsius? (Room temperature in degrees C is 20-25; cryogenic machining with
   // liquid nitrogen, 77 K, is real practice and passes.)
   double min_temperature_K = 60.0;

@@ -144,6 +144,26 @@ TEST(InputPlausibility, TemperaturesInCelsiusAreFlagged) {
   expect_one_warning(input_plausibility_warnings(cut, m), {"cutting.tool_temperature = 25 K"});
 }
 
+// A conducting tool's conductivity in W/(cm K) (0.86 for carbide) and a specific heat given as rho c (230 J/(kg K)
+// for carbide) are named; carbide's own values (86 W/(m K), 3e6 J/(m^3 K)) and diamond's (2000) pass.
+TEST(InputPlausibility, AConductingToolInAnotherUnitIsNamed) {
+  const MaterialParameters m = library_set("ti64-cutting");
+  CuttingParameters cut;
+  cut.material = m.name;
+  cut.tool_heat_transfer_coefficient = 1e6;
+  cut.tool_conductivity = 86.0;
+  cut.tool_volumetric_heat_capacity = 3e6;
+  EXPECT_TRUE(input_plausibility_warnings(cut, m).empty());
+  cut.tool_conductivity = 2000.0;
+  EXPECT_TRUE(input_plausibility_warnings(cut, m).empty());
+  cut.tool_conductivity = 0.86;
+  expect_one_warning(input_plausibility_warnings(cut, m), {"cutting.tool_conductivity = 0.86 W/(m K)", "W/(cm K)"});
+  cut.tool_conductivity = 86.0;
+  cut.tool_volumetric_heat_capacity = 230.0;
+  expect_one_warning(input_plausibility_warnings(cut, m),
+                     {"cutting.tool_volumetric_heat_capacity = 230 J/(m^3 K)", "multiply by the density"});
+}
+
 // A workpiece that starts near melting has almost no strength (1850 K: Fc 3.6 N/mm, a "continuous" chip); a
 // preheated one (hot machining, 600 K) is no slip.
 TEST(InputPlausibility, AWorkpieceStartingNearItsMeltingTemperatureIsNamed) {
