@@ -97,6 +97,9 @@ def row(variant, run_dir, meas_by_condition):
         # The tool's share of the heat over the steady window (summary.json tool_heat; blank in older records).
         "tool_heat_share_of_work": round(d["tool_heat"]["steady_window_share_of_tool_work"], 3)
         if d.get("tool_heat", {}).get("steady_window_share_of_tool_work") is not None else "",
+        # A conducting tool's hottest cell at the end (summary.json tool_heat.tool_temperature; blank for the others).
+        "tool_max_K": round(d["tool_heat"]["tool_temperature"]["max_K"])
+        if "tool_temperature" in d.get("tool_heat", {}) else "",
     }
 
 

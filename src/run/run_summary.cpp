@@ -130,8 +130,11 @@ RunSummary summarize(const Simulation& sim, const std::optional<CuttingParameter
         to_json(cutting_resolution(*cutting, workpiece_thermal_diffusivity_m2_per_s(*cutting, sim.scene())));
     s.sections["input_warnings"] = input_plausibility_warnings(*cutting, sim.scene());
   }
-  for (const auto& r : sim.rigid_bodies())
-    s.rigid_bodies.push_back({r.name, r.force, r.impulse, r.displacement, r.work});
+  for (const auto& r : sim.rigid_bodies()) {
+    s.rigid_bodies.push_back({r.name, r.force, r.impulse, r.displacement, r.work, std::nullopt});
+    if (!r.temperature_field.empty())
+      s.rigid_bodies.back().max_temperature_K = *std::max_element(r.temperature_field.begin(), r.temperature_field.end());
+  }
   if (sim.removed_particles() > 0) {
     s.removed_particles = sim.removed_particles();
     s.removed_mass_kg_per_m = sim.removed_mass();
@@ -174,12 +177,14 @@ json to_json(const RunSummary& s) {
     j["energy_balance"]["warning"] = w;
   j["max_temperature_K"] = s.max_temperature_K;
   json rigid = json::array();
-  for (const auto& r : s.rigid_bodies)
+  for (const auto& r : s.rigid_bodies) {
     rigid.push_back({{"name", r.name},
                      {"force_N_per_m", vec_json(r.force_N_per_m)},
                      {"impulse_N_s_per_m", vec_json(r.impulse_N_s_per_m)},
                      {"displacement_m", vec_json(r.displacement_m)},
                      {"work_J_per_m", r.work_J_per_m}});
+    if (r.max_temperature_K) rigid.back()["max_temperature_K"] = *r.max_temperature_K;
+  }
   j["rigid_bodies"] = rigid;
   if (s.removed_particles) j["removed_particles"] = *s.removed_particles;
   if (s.removed_mass_kg_per_m) j["removed_mass_kg_per_m"] = *s.removed_mass_kg_per_m;
@@ -226,7 +231,8 @@ RunSummary summary_from_json(const json& j) {
   if (j.contains("rigid_bodies"))
     for (const json& r : j["rigid_bodies"])
       s.rigid_bodies.push_back({text(r, "name"), vec(r, "force_N_per_m"), vec(r, "impulse_N_s_per_m"),
-                                vec(r, "displacement_m"), number(r, "work_J_per_m")});
+                                vec(r, "displacement_m"), number(r, "work_J_per_m"),
+                                optional_number(r, "max_temperature_K")});
   if (j.contains("removed_particles")) s.removed_particles = j["removed_particles"].get<std::uint64_t>();
   s.removed_mass_kg_per_m = optional_number(j, "removed_mass_kg_per_m");
   s.last_checkpoint = text(j, "last_checkpoint");

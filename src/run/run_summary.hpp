@@ -32,6 +32,7 @@ struct RigidBodySummary {
   std::string name;
   Vec2 force_N_per_m = Vec2::Zero(), impulse_N_s_per_m = Vec2::Zero(), displacement_m = Vec2::Zero();
   double work_J_per_m = 0.0;
+  std::optional<double> max_temperature_K;  // a conducting body's hottest cell at the end; none for the others
   bool operator==(const RigidBodySummary&) const = default;
 };
 

@@ -69,6 +69,28 @@ TEST(RunSummary, WhatTheRunWritesReadsBackKeyForKey) {
   EXPECT_EQ(mass_scaling_factor(back), 1.0);
 }
 
+// A conducting rigid body reports its hottest cell (rigid_bodies[].max_temperature_K), read back as written; the
+// others carry no such key.
+TEST(RunSummary, AConductingRigidBodyReportsItsHottestCell) {
+  Simulation plain(block());
+  EXPECT_FALSE(to_json(summarize(plain, std::nullopt, run_status::complete, 1.0, "", 1))["rigid_bodies"][0].contains(
+      "max_temperature_K"));
+  Scene scene = block();
+  scene.thermal.conduction = true;
+  for (auto& m : scene.materials) m.specific_heat = std::max(m.specific_heat, 1.0);
+  RigidBodySpec& wall = scene.rigid_bodies.at(0);
+  wall.heat_transfer_coefficient = 1e3;
+  wall.conductivity = 10.0;
+  wall.volumetric_heat_capacity = 1e6;
+  wall.temperature = 350.0;
+  wall.held_faces = {0};
+  Simulation sim(scene);
+  const RunSummary s = summarize(sim, std::nullopt, run_status::complete, 1.0, "", 1);
+  ASSERT_TRUE(s.rigid_bodies.at(0).max_temperature_K.has_value());
+  EXPECT_EQ(*s.rigid_bodies[0].max_temperature_K, 350.0);  // the start: every cell at the body's temperature
+  EXPECT_EQ(summary_from_json(to_json(s)).rigid_bodies, s.rigid_bodies);
+}
+
 TEST(RunSummary, FileRoundTripAndWrongTypesAreNamed) {
   Simulation sim(block());
   RunSummary s = summarize(sim, std::nullopt, run_status::failed, 0.0, "it broke", 2);
