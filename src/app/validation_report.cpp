@@ -453,6 +453,24 @@ TextTable goal_table(const ErrorTable& e, const SpeedTrends& t, const std::strin
   return goals;
 }
 
+// How the tool takes heat in these runs: adiabatic, a heat sink at its temperature, or conducting.
+std::string tool_heat_text(const ConditionRunSettings& settings) {
+  if (!settings.tool_heat_transfer_coefficient) return "; the tool surface is adiabatic";
+  const std::string temperature =
+      settings.tool_temperature ? fmt::format("{:g} K", *settings.tool_temperature) : std::string("the initial temperature");
+  if (!settings.tool_conductivity)
+    return fmt::format("; the tool is a heat sink at {} with a heat transfer coefficient of {:g} W/(m² K)", temperature,
+                       *settings.tool_heat_transfer_coefficient);
+  const bool transient = settings.tool_volumetric_heat_capacity && *settings.tool_volumetric_heat_capacity > 0.0;
+  return fmt::format("; the tool conducts heat ({:g} W/(m K), {}), held at {} on its back and top and heated through "
+                     "a heat transfer coefficient of {:g} W/(m² K)",
+                     *settings.tool_conductivity,
+                     transient ? fmt::format("transient, {:g} J/(m³ K)", *settings.tool_volumetric_heat_capacity)
+                               : std::string("steady"),
+                     temperature, *settings.tool_heat_transfer_coefficient);
+}
+
+
 // Everything validation.md says, gathered by write_validation_report.
 struct ReportParts {
   const std::vector<Condition>& conditions;
@@ -497,19 +515,7 @@ std::string assumptions_section(const ReportParts& r) {
                           "(--friction-heat-share)",
                           *settings.friction_heat_share)
             : std::string("; all frictional heat goes into the workpiece"))
-    << (settings.tool_heat_transfer_coefficient
-            ? fmt::format("; the tool is a heat sink at {} with a heat transfer coefficient of {:g} W/(m² K)",
-                          settings.tool_temperature ? fmt::format("{:g} K", *settings.tool_temperature)
-                                                    : std::string("the initial temperature"),
-                          *settings.tool_heat_transfer_coefficient)
-            : std::string("; the tool surface is adiabatic"))
-    << (settings.tool_conductivity
-            ? fmt::format("; the tool conducts heat ({:g} W/(m K), {}; held at its temperature on its back and top)",
-                          *settings.tool_conductivity,
-                          settings.tool_volumetric_heat_capacity && *settings.tool_volumetric_heat_capacity > 0.0
-                              ? fmt::format("transient, {:g} J/(m³ K)", *settings.tool_volumetric_heat_capacity)
-                              : std::string("steady"))
-            : std::string())
+    << tool_heat_text(settings)
     << "; contact detection: "
     << (settings.contact_detection.empty() ? contact_detection_name(kCuttingPresetContact) + " (the preset's)"
                                            : settings.contact_detection + " (--contact-detection)")

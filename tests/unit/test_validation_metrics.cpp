@@ -103,6 +103,30 @@ TEST(ValidationCases, ContactDetectionReachesTheScene) {
   EXPECT_EQ(both.solver.contact_detection, ContactDetection::Penalty);
 }
 
+// --tool-heat-transfer-coefficient, --tool-temperature and --tool-conductivity reach the run's tool: a steady
+// conducting tool held at the given temperature (its volumetric heat capacity makes it transient).
+TEST(ValidationCases, ConductingToolReachesTheScene) {
+  CuttingCondition c;
+  c.id = "test";
+  c.kind = "forces";
+  c.speed_m_per_s = 1.0;
+  c.h_mm = 0.1;
+  c.edge_radius_um = 30.0;
+  ConditionRunSettings s;
+  EXPECT_EQ(parse_case(condition_case_text(c, s), "test.toml").scene.rigid_bodies.at(0).conductivity, 0.0);
+  s.tool_heat_transfer_coefficient = 1e6;
+  s.tool_temperature = 350.0;
+  s.tool_conductivity = 86.0;
+  const RigidBodySpec steady = parse_case(condition_case_text(c, s), "test.toml").scene.rigid_bodies.at(0);
+  EXPECT_EQ(steady.conductivity, 86.0);
+  EXPECT_EQ(steady.heat_transfer_coefficient, 1e6);
+  EXPECT_EQ(steady.temperature, 350.0);
+  EXPECT_EQ(steady.volumetric_heat_capacity, 0.0);
+  EXPECT_GT(steady.heat_averaging_time, 0.0);
+  s.tool_volumetric_heat_capacity = 3e6;
+  EXPECT_EQ(parse_case(condition_case_text(c, s), "test.toml").scene.rigid_bodies.at(0).volumetric_heat_capacity, 3e6);
+}
+
 // Fc = a + b ln v is recovered exactly; a falling force has a negative slope.
 TEST(ValidationTrend, SlopeOverLogSpeed) {
   const std::vector<double> v{10, 100, 400};
