@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 namespace mpmcut {
 
@@ -52,7 +53,12 @@ RigidBodyHeat::RigidBodyHeat(const std::vector<RigidBodySpec>& specs, double h)
     // Factorised here, so that a body its held faces do not reach is refused before the run.
     if (steady_[r]) {
       scratch_field_ = bodies_[r].initial_field();
-      bodies_[r].steady_field(std::vector<double>(bodies_[r].cell_count(), 0.0), scratch_field_);
+      try {
+        bodies_[r].steady_field(std::vector<double>(bodies_[r].cell_count(), 0.0), scratch_field_);
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(fmt::format("rigid body \"{}\" (held_faces = [{}]): {}", specs[r].name,
+                                                fmt::join(specs[r].held_faces, ", "), e.what()));
+      }
     }
     any_ = true;
   }

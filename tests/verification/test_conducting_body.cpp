@@ -117,7 +117,13 @@ TEST(BodyConduction, BarCoolsThroughItsHeldEndAsTheSeries) {
 TEST(BodyConduction, SteadyBodyNeedsAHeldFaceThatReachesIt) {
   RigidBodySpec b = bar(0.4, 0.04, 2.0, 0.0, 300.0);
   b.held_faces = {};
-  EXPECT_THROW(RigidBodyHeat({b}, 0.01), std::invalid_argument);
+  try {
+    RigidBodyHeat heat({b}, 0.01);
+    ADD_FAILURE() << "a steady body without a held face was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("rigid body \"bar\""), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("no path to a held face"), std::string::npos) << e.what();
+  }
 }
 
 namespace {
