@@ -287,6 +287,10 @@ void CuttingForcesObserver::at_finish(const Simulation& sim, nlohmann::json& sum
                            {"initial_temperature_K", c_.initial_temperature},
                            {"cell_size_m", sim.grid().h},
                            {"particles_per_cell", c_.particles_per_cell}};
+  if (c_.tool_conductivity > 0.0) {
+    inputs["tool_conductivity_W_per_mK"] = c_.tool_conductivity;
+    inputs["tool_volumetric_heat_capacity_J_per_m3K"] = c_.tool_volumetric_heat_capacity;
+  }
   summary["cutting"] = inputs;
   if (steady_start_impulse_ && sim.time() > steady_start_time_) {
     const Vec2 mean = (tool.impulse - *steady_start_impulse_) / (sim.time() - steady_start_time_);

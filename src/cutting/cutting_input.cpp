@@ -130,6 +130,9 @@ void write_cutting_parameters(const CuttingParameters& c, std::ostream& out, std
   if (c.tool_heat_transfer_coefficient != 0.0)
     out << "tool_heat_transfer_coefficient = " << num(c.tool_heat_transfer_coefficient) << "  # W/(m^2 K)\n";
   if (c.tool_temperature != c.initial_temperature) out << "tool_temperature = " << num(c.tool_temperature) << "  # K\n";
+  if (c.tool_conductivity != 0.0) out << "tool_conductivity = " << num(c.tool_conductivity) << "  # W/(m K)\n";
+  if (c.tool_volumetric_heat_capacity != 0.0)
+    out << "tool_volumetric_heat_capacity = " << num(c.tool_volumetric_heat_capacity) << "  # J/(m^3 K)\n";
   out << "chip_room = " << num(c.chip_room) << "  # m (0 = automatic)\n";
   out << "snapshots = " << c.snapshots << "\n";
   if (c.mass_scaling == 0.0) out << "mass_scaling = \"auto\"\n";

@@ -368,11 +368,15 @@ TEST_F(LongRuns, RunsOfAnOlderModelOfTheirSceneAreRunAgainNotKeptOrResumed) {
 
 // A cut interrupted inside its steady window and resumed: the forces observer's sums (steady-window means, the
 // rake face's forces, slip speed and frictional work, the edge and flank's) travel in the checkpoint, so the
-// summary's tool results equal the uninterrupted run's to the last digit.
+// summary's tool results equal the uninterrupted run's to the last digit. The tool conducts heat (steady): its
+// field and averaged heat input travel too (tool_heat.tool_temperature, tool_temperature.csv), and the resumed run
+// reads the conducting tool's inputs back from the result's scene.toml (the summary's `cutting` inputs).
 TEST_F(LongRuns, CutResumedInsideItsSteadyWindowKeepsTheToolResults) {
   // The tiny cut's steady window starts at half of its travel.
-  fs::copy_file(fs::path(MPMCUT_TEST_DIR) / "support" / "cases" / "tiny_cut.toml", case_file_,
-                fs::copy_options::overwrite_existing);
+  std::string text = read_file(fs::path(MPMCUT_TEST_DIR) / "support" / "cases" / "tiny_cut.toml");
+  text.replace(text.find("[cutting]\n"), 10,
+               "[cutting]\ntool_heat_transfer_coefficient = 1e6\ntool_conductivity = 86.0\n");
+  std::ofstream(case_file_) << text;
   const CliResult ref = run("reference", {"--no-plots"});
   ASSERT_EQ(ref.exit_code, 0) << ref.output;
   // Its 0.1 mm of travel gives no chip of twice the entry chip's area: the console says so beside the forces.
@@ -394,9 +398,12 @@ TEST_F(LongRuns, CutResumedInsideItsSteadyWindowKeepsTheToolResults) {
   ASSERT_TRUE(expected.contains("rake_face")) << expected.dump(2);
   ASSERT_TRUE(expected["rake_face"].contains("friction_work_per_travel_N_per_mm")) << expected.dump(2);
   ASSERT_TRUE(expected["edge_and_flank"].contains("edge_arc")) << expected.dump(2);  // the split survives a resume
+  ASSERT_TRUE(expected["tool_heat"].contains("tool_temperature")) << expected.dump(2);
+  EXPECT_EQ(expected["cutting"].at("tool_conductivity_W_per_mK"), 86.0);
   for (const char* key : {"mean_cutting_force_N_per_mm", "mean_thrust_force_N_per_mm", "tool_chip_contact_length_m",
-                          "rake_face", "edge_and_flank", "tool_heat", "steady_window"})
+                          "rake_face", "edge_and_flank", "tool_heat", "steady_window", "cutting"})
     EXPECT_EQ(actual.at(key), expected.at(key)) << key;
+  EXPECT_EQ(read_file(out("interrupted") / "tool_temperature.csv"), read_file(out("reference") / "tool_temperature.csv"));
 }
 
 // P2G is coloured by strips of grid rows in a fixed order and every sum over particles uses
