@@ -73,10 +73,11 @@ CuttingParameters read_cutting_parameters(TableReader& t) {
                Range::closed(0.0, 1e9, "J/(m^3 K)", "rho c of a conducting tool; 0 = a steady tool"));
   if (c.tool_conductivity > 0.0) {
     t.check("tool_conductivity", c.tool_heat_transfer_coefficient > 0.0,
-            "0 unless tool_heat_transfer_coefficient > 0 (the heat enters the tool through it)", c.tool_conductivity);
+            "0 unless cutting.tool_heat_transfer_coefficient > 0 (the heat enters the tool through it)",
+            c.tool_conductivity);
     t.check("tool_conductivity", c.friction_heat_share == 1.0,
-            "0 unless friction_heat_share = 1: a conducting tool takes its part of the frictional heat by conduction "
-            "from the workpiece's surface",
+            "0 unless cutting.friction_heat_share = 1: a conducting tool takes its part of the frictional heat by "
+            "conduction from the workpiece's surface",
             c.tool_conductivity);
   } else {
     t.check("tool_volumetric_heat_capacity", c.tool_volumetric_heat_capacity == 0.0,

@@ -48,8 +48,8 @@ const std::vector<std::pair<std::string, std::string>> kAllowed = {
     {"cutting.rake_angle_deg", "-1"},
     {"cutting.edge_radius", "0"},  // a sharp tool
     {"cutting.friction", "0"},     // frictionless
-    {"cutting.friction_heat_share", "0"},  // all frictional heat into the tool
-    {"cutting.tool_heat_transfer_coefficient", "0"},  // adiabatic tool
+    {"cutting.tool_conductivity", "0"},              // a tool at its temperature
+    {"cutting.tool_volumetric_heat_capacity", "0"},  // a steady conducting tool
     {"cutting.steady_start_fraction", "0"},
     {"rounding_radius", "0"},
     {"friction", "0"},
@@ -71,7 +71,10 @@ const std::vector<std::pair<std::string, std::string>> kAllowedInContext = {
     // 0 (the default) for a key the material's model does not use (e.g. Johnson-Cook keys of an
     // elastic material); refused where the model uses it.
     {"melting_temperature", "0"}, {"jc_m", "0"}, {"reference_strain_rate", "0"}, {"mg_c0", "0"},
-    {"min_failure_strain", "0"}, {"fracture_energy_brittle", "0"}, {"fracture_transition_exponent", "0"}};
+    {"min_failure_strain", "0"}, {"fracture_energy_brittle", "0"}, {"fracture_transition_exponent", "0"},
+    // All frictional heat into the tool, an adiabatic tool: refused where the tool conducts (it takes its heat
+    // through the coefficient, and the frictional heat by conduction from the workpiece).
+    {"cutting.friction_heat_share", "0"}, {"cutting.tool_heat_transfer_coefficient", "0"}};
 
 // `pattern` matches `key` exactly or as its last dotted part(s); '*' stands for an index.
 bool matches(const std::string& pattern, const std::string& key) {
