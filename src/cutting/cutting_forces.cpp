@@ -374,9 +374,10 @@ void CuttingForcesObserver::at_finish(const Simulation& sim, nlohmann::json& sum
           {"friction_heat_share", c_.friction_heat_share},
           {"definition",
            "heat that flowed from the workpiece into the tool (through tool_heat_transfer_coefficient: into its heat "
-           "sink at tool_temperature, or into a conducting tool's field, tool_temperature below) plus the frictional heat the workpiece does not take ((1 - "
-           "friction_heat_share) of the frictional work): over the whole run, and over the steady window, there also "
-           "as a share of the tool's work (mean cutting force x travel); 0 for an adiabatic tool"}};
+           "sink at tool_temperature, or into a conducting tool's field, tool_temperature below) plus the frictional "
+           "heat the workpiece does not take ((1 - friction_heat_share) of the frictional work): over the whole run, "
+           "and over the steady window, there also as a share of the tool's work (mean cutting force x travel); 0 for "
+           "an adiabatic tool"}};
     }
     if (!tool.temperature_field.empty()) write_tool_temperature(sim, summary);
     summary["steady_window"] = {{"start_time_s", steady_start_time_},
