@@ -78,15 +78,21 @@ TEST(ValidationResolution, ThermalLengthLimitsTheCellOfFastCuts) {
               std::sqrt(0.1) * 6.774e-6 / 1.6, 0.001e-6);
 }
 
-// --contact-detection reaches the run's scene; without it the case text has no [solver] table, so the cases (and
-// the committed run records made from them) are what they were before the option existed.
-TEST(ValidationCases, ContactDetectionReachesTheScene) {
+// A force condition at h = 0.1 mm, 1 m/s, r_n = 30 um.
+CuttingCondition force_condition() {
   CuttingCondition c;
   c.id = "test";
   c.kind = "forces";
   c.speed_m_per_s = 1.0;
   c.h_mm = 0.1;
   c.edge_radius_um = 30.0;
+  return c;
+}
+
+// --contact-detection reaches the run's scene; without it the case text has no [solver] table, so the cases (and
+// the committed run records made from them) are what they were before the option existed.
+TEST(ValidationCases, ContactDetectionReachesTheScene) {
+  const CuttingCondition c = force_condition();
   ConditionRunSettings s;
   EXPECT_EQ(condition_case_text(c, s).find("[solver]"), std::string::npos);
   // Without the option: the cutting preset's penalty contact.
@@ -106,12 +112,7 @@ TEST(ValidationCases, ContactDetectionReachesTheScene) {
 // --tool-heat-transfer-coefficient, --tool-temperature and --tool-conductivity reach the run's tool: a steady
 // conducting tool held at the given temperature (its volumetric heat capacity makes it transient).
 TEST(ValidationCases, ConductingToolReachesTheScene) {
-  CuttingCondition c;
-  c.id = "test";
-  c.kind = "forces";
-  c.speed_m_per_s = 1.0;
-  c.h_mm = 0.1;
-  c.edge_radius_um = 30.0;
+  const CuttingCondition c = force_condition();
   ConditionRunSettings s;
   EXPECT_EQ(parse_case(condition_case_text(c, s), "test.toml").scene.rigid_bodies.at(0).conductivity, 0.0);
   s.tool_heat_transfer_coefficient = 1e6;
