@@ -52,9 +52,9 @@ RigidBodyHeat::RigidBodyHeat(const std::vector<RigidBodySpec>& specs, double h)
     averaging_time_[r] = specs[r].heat_averaging_time;
     // Factorised here, so that a body its held faces do not reach is refused before the run.
     if (steady_[r]) {
-      scratch_field_ = bodies_[r].initial_field();
+      std::vector<double> field = bodies_[r].initial_field();
       try {
-        bodies_[r].steady_field(std::vector<double>(bodies_[r].cell_count(), 0.0), scratch_field_);
+        bodies_[r].steady_field(std::vector<double>(bodies_[r].cell_count(), 0.0), field);
       } catch (const std::invalid_argument& e) {
         throw std::invalid_argument(fmt::format("rigid body \"{}\" (held_faces = [{}]): {}", specs[r].name,
                                                 fmt::join(specs[r].held_faces, ", "), e.what()));
@@ -109,8 +109,7 @@ void RigidBodyHeat::couple_implicitly(Grid& grid, double dt) {
   }
 }
 
-double RigidBodyHeat::deposit_and_advance(const Grid& grid, std::vector<RigidBodyState>& bodies, double dt) {
-  double out = 0.0;
+void RigidBodyHeat::deposit_and_advance(const Grid& grid, std::vector<RigidBodyState>& bodies, double dt) {
   for (std::size_t r = 0; r < bodies_.size(); ++r) {
     if (!bodies_[r].active()) continue;
     heat_.assign(bodies_[r].cell_count(), 0.0);
@@ -121,20 +120,17 @@ double RigidBodyHeat::deposit_and_advance(const Grid& grid, std::vector<RigidBod
       }
     links_[r].clear();
     if (!steady_[r]) {
-      out += bodies_[r].advance(bodies[r].temperature_field, heat_, dt);
+      bodies_[r].advance(bodies[r].temperature_field, heat_, dt);
       continue;
     }
     // A steady body: the field its heat input would settle to, the input averaged over the averaging time
     // (an exponential average: the field follows the cut, not each update, which keeps the exchange stable).
     std::vector<double>& average = bodies[r].heat_input_average;
     const double a = dt > 0.0 ? std::min(1.0, dt / averaging_time_[r]) : 0.0;
-    for (std::size_t c = 0; c < average.size(); ++c) {
-      if (dt > 0.0) average[c] += a * (heat_[c] / dt - average[c]);
-      out += heat_[c];
-    }
+    if (dt > 0.0)
+      for (std::size_t c = 0; c < average.size(); ++c) average[c] += a * (heat_[c] / dt - average[c]);
     bodies_[r].steady_field(average, bodies[r].temperature_field);
   }
-  return out;
 }
 
 }  // namespace mpmcut

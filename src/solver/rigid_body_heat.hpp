@@ -38,9 +38,8 @@ class RigidBodyHeat {
   // to all its nodes, C its heat capacity), so that a cell of small heat capacity cannot overshoot its nodes.
   void couple_implicitly(Grid& grid, double dt);
   // After conduct_heat: the heat each sink node gave goes into its cell (shared between bodies by their
-  // conductances there), and every conducting body's field advances over dt. Returns the heat that left
-  // the bodies through their held faces, J/m.
-  double deposit_and_advance(const Grid& grid, std::vector<RigidBodyState>& bodies, double dt);
+  // conductances there), and every conducting body's field advances over dt.
+  void deposit_and_advance(const Grid& grid, std::vector<RigidBodyState>& bodies, double dt);
 
  private:
   struct Link {
@@ -51,7 +50,6 @@ class RigidBodyHeat {
   std::vector<BodyConduction> bodies_;  // inactive where a body does not conduct
   std::vector<char> steady_;             // a conducting body without heat capacity
   std::vector<double> averaging_time_;   // s, of a steady body's heat input
-  std::vector<double> scratch_field_;
   std::vector<std::vector<Link>> links_;
   std::vector<double> heat_;  // scratch: J/m per cell
 };
