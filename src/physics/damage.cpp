@@ -19,7 +19,8 @@ JohnsonCookDamage::JohnsonCookDamage(const MaterialParameters& p)
       brittle_fracture_energy_(p.fracture_energy_brittle),
       transition_rate_(p.fracture_transition_strain_rate),
       transition_exponent_(p.fracture_transition_exponent),
-      max_damage_(p.max_damage) {
+      max_damage_(p.max_damage),
+      crack_friction_(p.crack_friction) {
   require_valid(p, damage_parameter_table());
 }
 
@@ -102,13 +103,15 @@ void JohnsonCookDamage::evolve(DamageState& s, double du, double stress, DamageS
   s.damage = D > s.damage ? D : s.damage;  // never heals
 }
 
-PlaneStrainTensor degraded_stress(const PlaneStrainTensor& s, double pressure, double D, bool failed) {
-  if (failed) {
+PlaneStrainTensor degraded_stress(const PlaneStrainTensor& s, double pressure, double D, double deviator_share,
+                                  bool failed) {
+  if (failed) {  // compression only, and the closed crack's friction (share phi, 0 without it)
     const double pc = pressure > 0.0 ? pressure : 0.0;
-    return {-pc, -pc, -pc, 0.0};
+    const double k = deviator_share;
+    return {k * s.xx - pc, k * s.yy - pc, k * s.zz - pc, k * s.xy};
   }
-  const double keep = 1.0 - D;
-  const double pe = pressure >= 0.0 ? pressure : keep * pressure;
+  const double keep = deviator_share;
+  const double pe = pressure >= 0.0 ? pressure : (1.0 - D) * pressure;
   return {keep * s.xx - pe, keep * s.yy - pe, keep * s.zz - pe, keep * s.xy};
 }
 

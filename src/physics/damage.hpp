@@ -13,8 +13,13 @@
 //              G_f(rate) = G_b + (G_f,low - G_b) / (1 + (rate/rate_t)^n), or G_f,low when rate_t = 0
 //              (a ductile-to-brittle transition of the shear fracture; theory_materials.md §5.6).
 //              D <= max_damage; D = max_damage means fully failed.
-// Degradation: sigma = (1 - D) s - p_eff I,  p_eff = p if p >= 0 (compression kept) else (1 - D) p;
-//              failed: s = 0, p_eff = max(p, 0).
+// Degradation: sigma = k s - p_eff I,  p_eff = p if p >= 0 (compression kept) else (1 - D) p;
+//              k = 1 - D (1 - phi), phi = min(1, sqrt(3) mu_c p / q) for p > 0, else 0: a closed crack's faces
+//              carry Coulomb friction (mu_c = crack_friction; mu_c = 0 gives k = 1 - D). The cracked part D phi s
+//              is a Coulomb slider: it stores D phi^2 s:s/(4G) and dissipates the rest of its work (heat);
+//              failed: sigma = phi s - max(p, 0) I (s = 0 without crack friction).
+#include <numbers>
+
 #include "physics/material_parameters.hpp"
 #include "core/tensor.hpp"
 
@@ -49,6 +54,21 @@ class JohnsonCookDamage {
   // (Bao & Wierzbicki 2005; theory_materials.md §5.7).
   bool fracture_possible(double triaxiality) const { return triaxiality > triaxiality_cutoff_; }
   bool failed(double damage) const { return enabled_ && damage >= max_damage_; }
+
+  bool has_crack_friction() const { return crack_friction_ > 0.0; }
+  // phi of the degradation above: the share of the undamaged deviator (von Mises q, Pa) that a closed crack's
+  // friction carries under the pressure p (Pa, compression positive): min(1, sqrt(3) mu_c p / q), 0 when open.
+  double closed_crack_share(double pressure, double q) const {
+    if (!(crack_friction_ > 0.0 && pressure > 0.0)) return 0.0;
+    const double limit = std::numbers::sqrt3 * crack_friction_ * pressure;
+    return limit < q ? limit / q : 1.0;
+  }
+  // k = 1 - D (1 - phi): the share of its undamaged deviator that a damaged, not failed, particle carries. Its
+  // equivalent shear is (1 - D) q/sqrt(3) + D min(q/sqrt(3), mu_c p): the intact part and the closed crack's friction.
+  double deviator_share(double damage, double pressure, double q) const {
+    if (!(damage > 0.0)) return 1.0;
+    return 1.0 - damage * (1.0 - closed_crack_share(pressure, q));
+  }
 
   // JC failure strain. log_rate_ratio = max(ln(epsdot/epsdot0), 0), homologous_temperature in [0, 1].
   double failure_strain(double triaxiality, double log_rate_ratio, double homologous_temperature) const;
@@ -88,13 +108,16 @@ class JohnsonCookDamage {
   double transition_rate_;          // rate_t, 1/s (0: rate-independent)
   double transition_exponent_;      // n
   double max_damage_;
+  double crack_friction_;  // mu_c
 };
 
 // eta = -p/q (tension positive; pressure p positive in compression); 0 when q = 0.
 inline double stress_triaxiality(double pressure, double q) { return q > 0.0 ? -pressure / q : 0.0; }
 
-// The Cauchy stress carried by a damaged particle from its undamaged deviator and pressure.
+// The Cauchy stress carried by a damaged particle from its undamaged deviator and pressure; deviator_share is
+// JohnsonCookDamage::deviator_share (1 - D without crack friction), for a failed particle the closed crack's share
+// phi (0 without crack friction).
 PlaneStrainTensor degraded_stress(const PlaneStrainTensor& effective_deviator, double pressure, double damage,
-                                  bool failed);
+                                  double deviator_share, bool failed);
 
 }  // namespace mpmcut

@@ -24,6 +24,10 @@ struct DamageParameters {
   double fracture_transition_strain_rate = 0.0;  // rate_t, 1/s (0: G_f does not depend on rate)
   double fracture_transition_exponent = 2.0;     // n, -
   double max_damage = 0.999;  // D at which a particle counts as fully failed, -
+  // Coulomb coefficient across a closed crack: a damaged particle under compression p keeps, of the shear its
+  // damage takes away, up to crack_friction * p (theory_materials.md §5.8). 0: a damaged particle keeps only
+  // (1 - D) of its shear whatever the pressure.
+  double crack_friction = 0.0;  // mu_c, -
 
   bool operator==(const DamageParameters&) const = default;
 };
@@ -74,6 +78,11 @@ inline const ParameterTable<DamageParameters>& damage_parameter_table() {
           number("max_damage", &P::max_damage, "-", Range::open_closed(0.0, 1.0),
                  "D at which a particle counts as failed")
               .model_limit_above(),
+          number("crack_friction", &P::crack_friction, "-",
+                 Range::closed(0.0, 10.0, "", "0 = a damaged particle's shear is (1 - D) of the undamaged shear"),
+                 "mu_c: a damaged particle under compression p keeps, of the shear its damage takes away, up to "
+                 "mu_c p: Coulomb friction across its closed crack (theory_materials.md §5.8)")
+              .used_with(InUse::Damage),
       },
       {}};
   return table;

@@ -102,8 +102,15 @@ ConstitutiveIncrement JohnsonCookMaterial::update(Particles& p, std::size_t i, c
   double rate = smoothed_rate(p.plastic_strain_rate[i], 0.0, dt);
   double log_rate = 0.0;
   bool log_rate_known = false;
-  if (failed0 || flow_.melted(T0)) {
-    s = {};  // failed or molten: no deviatoric stress, no plastic flow
+  // The closed crack's slider (theory_materials.md §5.8): the cracked part D of a damaged particle, all of a failed
+  // one, carries phi of the undamaged deviator, which a failed particle then keeps integrating. It needs the step's
+  // start: phi0 of the rotated deviator.
+  const bool crack_slider = damage_.has_crack_friction() && D0 > 0.0;
+  const double cracked0 = failed0 ? 1.0 : D0;  // the slider's part of the particle
+  const PlaneStrainTensor s_start = s;
+  const double phi0 = crack_slider ? damage_.closed_crack_share(old_pressure, std::sqrt(1.5 * s.contract(s))) : 0.0;
+  if ((failed0 && !crack_slider) || flow_.melted(T0)) {
+    s = {};  // failed (without crack friction) or molten: no deviatoric stress, no plastic flow
   } else {
     s.xx += two_G_ * (exx - ev3);
     s.yy += two_G_ * (eyy - ev3);
@@ -215,10 +222,10 @@ ConstitutiveIncrement JohnsonCookMaterial::update(Particles& p, std::size_t i, c
     D = st.damage;
   }
 
-  // 7. Energy increments (theory_materials.md §6). Work of the actual (degraded) stress through
-  //    plastic flow: (1 - D0) sigma_y d(eps_p) V. Before initiation it is plastic work; after initiation
-  //    it belongs to the fracture process (damage dissipation), together with the elastic energy
-  //    released as D grows, Y dD V with Y = s:s/(4G) + <-p>^2/(2K).
+  // 7. Energy increments (theory_materials.md §6). Work of the intact part's stress through plastic flow:
+  //    (1 - D0) sigma_y d(eps_p) V. Before initiation it is plastic work; after initiation it belongs to the fracture
+  //    process (damage dissipation), together with the elastic energy released as D grows, Y dD V with
+  //    Y = e s:s/(4G) + <-p>^2/(2K), e = 1 - phi^2 the part of the stored deviatoric energy the crack takes (§5.8).
   if (dep > 0.0) {
     const double work_density = (1.0 - D0) * q;  // per unit plastic strain and volume
     inc.plastic_work = work_density * before * volume;
@@ -227,20 +234,33 @@ ConstitutiveIncrement JohnsonCookMaterial::update(Particles& p, std::size_t i, c
     inc.heat = taylor_quinney_ * work_density * dep * volume;
   }
   inc.damage_dissipation += (1.0 - D0) * opening_dissipation * volume;  // crack opening: not heat
+  const double phi = crack_slider ? damage_.closed_crack_share(pressure, q) : 0.0;
+  if (crack_slider) {
+    // The closed crack's Coulomb slider (§5.8), D0 phi s: its work through the step's deviatoric strain (trapezoid)
+    // less what it stores, D0 phi^2 s:s/(4G), is friction: plastic work, all of it heat (D0 = 1 once failed).
+    const PlaneStrainTensor de{exx - ev3, eyy - ev3, -ev3, exy};
+    const double work = 0.5 * (s_start * phi0 + s * phi).contract(de);
+    const double stored = (phi * phi * s.contract(s) - phi0 * phi0 * s_start.contract(s_start)) / (4.0 * G_);
+    const double friction = cracked0 * (work - stored) * volume;
+    inc.plastic_work += friction;
+    inc.heat += friction;
+    T += friction / (p.mass[i] * params_.specific_heat);
+  }
   if (D > D0) {
-    double Y = s.contract(s) / (4.0 * G_);
+    double Y = s.contract(s) / (4.0 * G_) * (1.0 - phi * phi);
     if (pressure < 0.0) Y += pressure * pressure / (2.0 * eos_.bulk_modulus(rho_solid));
-    // At failure the rest of the stored deviatoric and tensile energy goes too: D jumps to 1.
+    // At failure the rest of the stored deviatoric and tensile energy goes too: D jumps to 1 (the slider keeps its
+    // phi^2 share).
     inc.damage_dissipation += Y * ((failed ? 1.0 : D) - D0) * volume;
   }
-  if (failed) s = {};
+  if (failed && !damage_.has_crack_friction()) s = {};
   // Per particle, so that the crack length it stands for, damage_dissipation / G_f, can be summed
   // with each particle's own G_f (rate-dependent, theory_materials.md §5.6).
   if (inc.damage_dissipation != 0.0) p.damage_dissipation[i] += inc.damage_dissipation;
 
   // 8. Store the state: undamaged stress (no viscosity) for the next step, degraded stress for forces.
   p.effective_stress[i] = s.plus_identity(-pressure);
-  p.stress[i] = degraded_stress(s, pressure + viscous_pressure, D, failed);
+  p.stress[i] = degraded_stress(s, pressure + viscous_pressure, D, failed ? phi : 1.0 - D * (1.0 - phi), failed);
   p.plastic_strain[i] = eps0 + dep;
   p.plastic_strain_rate[i] = rate;
   p.temperature[i] = T;
@@ -253,9 +273,11 @@ double JohnsonCookMaterial::wave_speed(const Particles& p, std::size_t i) const 
   const double density = solid_density(p, i);
   const double K = eos_.bulk_modulus(density);
   if (damage_.failed(damage_.enabled() ? p.damage[i] : 0.0) || flow_.melted(p.temperature[i])) {
-    // No shear stiffness. A failed particle that has opened up (V > V0) carries no stress at all; it
-    // must not shorten the step through its low density, so use at least the reference density.
-    return std::sqrt(K / std::max(density, params_.density));
+    // No shear stiffness (but the closed crack's friction, §5.8). A failed particle that has opened up (V > V0)
+    // carries no stress at all; it must not shorten the step through its low density, so use at least the
+    // reference density.
+    const double phi = flow_.melted(p.temperature[i]) ? 0.0 : closed_crack_share(p, i);
+    return std::sqrt((K + phi * 4.0 / 3.0 * G_) / std::max(density, params_.density));
   }
   // A damaged particle is softer: its deviator carries (1 - D) G, and in tension (opened up,
   // density below the reference) its pressure (1 - D) K too. Without this, a damaged particle
@@ -263,7 +285,16 @@ double JohnsonCookMaterial::wave_speed(const Particles& p, std::size_t i) const 
   // almost no stress (seen in cuts: dt fell 4x).
   const double D = damage_.enabled() ? p.damage[i] : 0.0;
   const double bulk = density < params_.density ? (1.0 - D) * K : K;
-  return std::sqrt((bulk + (1.0 - D) * 4.0 / 3.0 * G_) / density);
+  const double share = D > 0.0 ? 1.0 - D * (1.0 - closed_crack_share(p, i)) : 1.0;
+  return std::sqrt((bulk + share * 4.0 / 3.0 * G_) / density);
+}
+
+double JohnsonCookMaterial::closed_crack_share(const Particles& p, std::size_t i) const {
+  if (!damage_.has_crack_friction()) return 0.0;  // no stress needed: the hot path of most runs
+  const PlaneStrainTensor& sigma = p.effective_stress[i];
+  const double pressure = -sigma.mean();
+  const PlaneStrainTensor s = sigma.plus_identity(pressure);
+  return damage_.closed_crack_share(pressure, std::sqrt(1.5 * s.contract(s)));
 }
 
 double JohnsonCookMaterial::elastic_energy(const Particles& p, std::size_t i) const {
@@ -275,9 +306,11 @@ double JohnsonCookMaterial::elastic_energy(const Particles& p, std::size_t i) co
   const double D = damage_.enabled() ? p.damage[i] : 0.0;
   const bool failed = damage_.failed(D);
   const double keep = failed ? 0.0 : 1.0 - D;
+  const double phi = D > 0.0 ? closed_crack_share(p, i) : 0.0;
+  const double keep_dev = failed ? phi * phi : 1.0 - D * (1.0 - phi * phi);  // the slider stores D phi^2 (§5.8)
   const double K = eos_.bulk_modulus(solid_density(p, i));
   const double vol = pressure * pressure / (2.0 * K) * (pressure >= 0.0 ? 1.0 : keep);
-  return p.volume[i] * (keep * s.contract(s) / (4.0 * G_) + vol);
+  return p.volume[i] * (keep_dev * s.contract(s) / (4.0 * G_) + vol);
 }
 
 }  // namespace mpmcut

@@ -17,10 +17,11 @@ class JohnsonCookMaterial final : public Material {
   ConstitutiveIncrement update(Particles& p, std::size_t i, const Mat2& L,
                                const StepContext& ctx) const override;
   // sqrt((K(rho) + 4G/3)/rho) at the current density of the particle's solid, m exp(crack_opening)/V (K the
-  // EOS tangent; damaged: (1 - D) on G, and on K in tension); failed or molten:
+  // EOS tangent; damaged: the deviator's share k (damage.hpp) on G, and 1 - D on K in tension); failed or molten:
   // sqrt(K/max(rho, rho0)) (no shear stiffness; an opened crack does not shrink the time step).
   double wave_speed(const Particles& p, std::size_t i) const override;
-  // (1-D) s:s/(4G) + p^2/(2K) (tensile p^2 also scaled by 1-D; failed: compression only), times V.
+  // (1 - D (1 - phi^2)) s:s/(4G) + p^2/(2K) (phi the closed crack's share of damage.hpp; tensile p^2 scaled by
+  // 1-D; failed: compression only), times V.
   double elastic_energy(const Particles& p, std::size_t i) const override;
 
   // The smoothed plastic strain rate shared by the flow law and the damage law: backward Euler of
@@ -53,6 +54,9 @@ class JohnsonCookMaterial final : public Material {
   double shear_modulus() const { return G_; }
 
  private:
+  // The closed crack's share phi (damage.hpp) of particle i's stored undamaged deviator; 0 without crack friction.
+  double closed_crack_share(const Particles& p, std::size_t i) const;
+
   JohnsonCookFlowStress flow_;
   EquationOfStateModel eos_;
   JohnsonCookDamage damage_;

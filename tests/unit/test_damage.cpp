@@ -178,22 +178,25 @@ TEST(JohnsonCookDamage, ZeroFractureEnergyIsRefused) {
 }
 
 // theory §5, Eq. (5.5): sigma = (1 - D) s - p_eff I, p_eff = p in compression, (1 - D) p in tension;
-// failed: no shear, no tension, compression kept.
+// failed: no shear (but a closed crack's friction, §5.8), no tension, compression kept.
 TEST(JohnsonCookDamage, DegradedStress) {
   const PlaneStrainTensor s{2e8, -1e8, -1e8, 5e7};
-  const PlaneStrainTensor a = degraded_stress(s, 3e8, 0.25, false);  // compression
+  const PlaneStrainTensor a = degraded_stress(s, 3e8, 0.25, 0.75, false);  // compression
   EXPECT_DOUBLE_EQ(a.xx, 0.75 * 2e8 - 3e8);
   EXPECT_DOUBLE_EQ(a.zz, 0.75 * -1e8 - 3e8);
   EXPECT_DOUBLE_EQ(a.xy, 0.75 * 5e7);
-  const PlaneStrainTensor b = degraded_stress(s, -3e8, 0.25, false);  // tension
+  const PlaneStrainTensor b = degraded_stress(s, -3e8, 0.25, 0.75, false);  // tension
   EXPECT_DOUBLE_EQ(b.yy, 0.75 * -1e8 + 0.75 * 3e8);
-  const PlaneStrainTensor c = degraded_stress(s, 3e8, 0.999, true);  // failed, compression
+  const PlaneStrainTensor c = degraded_stress(s, 3e8, 0.999, 0.0, true);  // failed, compression
   EXPECT_EQ(c.xy, 0.0);
   EXPECT_EQ(c.xx, -3e8);
   EXPECT_EQ(c.yy, -3e8);
   EXPECT_EQ(c.zz, -3e8);
   EXPECT_EQ(c.deviator().contract(c.deviator()), 0.0);
-  const PlaneStrainTensor t = degraded_stress(s, -3e8, 0.999, true);  // failed, tension
+  const PlaneStrainTensor f = degraded_stress(s, 3e8, 0.999, 0.4, true);  // failed, closed crack's friction (§5.8)
+  EXPECT_DOUBLE_EQ(f.xy, 0.4 * 5e7);
+  EXPECT_DOUBLE_EQ(f.xx, 0.4 * 2e8 - 3e8);
+  const PlaneStrainTensor t = degraded_stress(s, -3e8, 0.999, 0.0, true);  // failed, tension
   EXPECT_EQ(t.xx, 0.0);
   EXPECT_EQ(t.xy, 0.0);
   EXPECT_EQ(t.trace(), 0.0);
@@ -204,4 +207,24 @@ TEST(JohnsonCookDamage, TriaxialitySign) {
   EXPECT_DOUBLE_EQ(stress_triaxiality(-1.0, 3.0), 1.0 / 3.0);  // uniaxial tension: p = -sigma/3, q = sigma
   EXPECT_DOUBLE_EQ(stress_triaxiality(1.0, 3.0), -1.0 / 3.0);
   EXPECT_EQ(stress_triaxiality(1.0, 0.0), 0.0);
+}
+
+// theory §5.8: the deviator's share k = 1 - D (1 - phi), phi = min(1, sqrt(3) mu_c p / q) for p > 0: the equivalent
+// shear k q/sqrt(3) is (1 - D) tau + D min(tau, mu_c p), tau = q/sqrt(3). Worked by hand for D = 0.8, q = sqrt(3)
+// 500 MPa (tau = 500 MPa): mu_c 0.5 at p = 400 MPa gives 0.2 * 500 + 0.8 * 200 = 260 MPa; at p = 2 GPa the crack's
+// friction carries all of it (500); in tension, or without crack friction, 0.2 * 500 = 100 MPa.
+TEST(JohnsonCookDamage, ClosedCrackShareIsTheIntactPartPlusFriction) {
+  MaterialParameters m = ti64_damage();
+  m.crack_friction = 0.5;
+  const JohnsonCookDamage d(m);
+  const double q = std::sqrt(3.0) * 5e8;
+  const auto tau = [&](const JohnsonCookDamage& model, double p) { return model.deviator_share(0.8, p, q) * 5e8; };
+  EXPECT_NEAR(tau(d, 4e8), 2.6e8, 1e-6);
+  EXPECT_NEAR(tau(d, 2e9), 5e8, 1e-6);
+  EXPECT_NEAR(tau(d, -4e8), 1e8, 1e-6);
+  EXPECT_NEAR(tau(d, 0.0), 1e8, 1e-6);
+  EXPECT_EQ(d.deviator_share(0.0, 4e8, q), 1.0);  // undamaged: all of it
+  const JohnsonCookDamage without(ti64_damage());
+  EXPECT_FALSE(without.has_crack_friction());
+  EXPECT_NEAR(tau(without, 2e9), 1e8, 1e-6);
 }

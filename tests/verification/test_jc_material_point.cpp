@@ -566,6 +566,86 @@ TEST(JohnsonCookMaterialPoint, FailedParticleKeepsCompressionOnly) {
   EXPECT_EQ(d.last().plastic_strain, 0.0);
 }
 
+// theory §5.8: a damaged particle (D = 0.8, initiated) under a pressure p, sheared, carries the equivalent shear
+// (1 - D) tau + D min(tau, mu_c p) of its undamaged shear tau: its closed crack's faces carry Coulomb friction, an open
+// one (tension) none. Perfectly plastic at A = 862 MPa (tau_y = 497.7 MPa), linear EOS, simple shear (no volume
+// change, so p stays). Worked by hand for p = 600 MPa, at yield: mu_c = 0 gives 99.5 MPa, mu_c = 0.5 gives
+// 0.2 * 497.7 + 0.8 * 300 = 339.5 MPa, mu_c = 1 all 497.7 MPa; elastically (gamma = 0.2 %, tau = G gamma) the same law,
+// and in tension (1 - D) G gamma for any mu_c; a failed particle (D = D_max) carries the friction alone,
+// min(tau, mu_c p), and nothing in tension. The flow stays below the triaxiality cut-off (eta = -0.70), so D
+// stays 0.8 and the crack's friction work is plastic work, all of it heat (the intact part's: chi of it), m c dT is
+// the heat, and the work put in equals elastic energy + plastic work to 0.5 % (the sliding crack dissipates what it
+// does not store). The wave speed sees the shear stiffness of the share carried.
+TEST(JohnsonCookMaterialPoint, ClosedCrackCarriesFrictionUpToMuTimesPressure) {
+  struct Case {
+    double mu_c, pressure, gamma, expected_tau;
+    double D = 0.8;
+  };
+  const double A = 862e6, tau_y = A / std::sqrt(3.0), D = 0.8, failed = 0.999;
+  const double G = perfectly_plastic_with_damage(EquationOfState::Linear, 2e4).shear_modulus();
+  const double tau_el = G * 0.002;  // 88 MPa, elastic
+  const std::vector<Case> cases{
+      {0.0, 6e8, 0.1, (1 - D) * tau_y},
+      {0.5, 6e8, 0.1, (1 - D) * tau_y + D * 0.5 * 6e8},
+      {1.0, 6e8, 0.1, tau_y},
+      {0.1, 6e8, 0.002, (1 - D) * tau_el + D * 0.1 * 6e8},
+      {0.5, 6e8, 0.002, tau_el},
+      {0.5, -2e8, 0.002, (1 - D) * tau_el},
+      // failed: the crack's friction alone, min(tau, mu_c p); nothing in tension
+      {0.5, 6e8, 0.1, 0.5 * 6e8, failed},
+      {0.1, 6e8, 0.002, 0.1 * 6e8, failed},
+      {0.5, 6e8, 0.002, tau_el, failed},
+      {0.5, -2e8, 0.002, 0.0, failed},
+  };
+  for (const Case& c : cases) {
+    const std::string what = "D " + std::to_string(c.D) + ", mu_c " + std::to_string(c.mu_c) + ", p " +
+                             std::to_string(c.pressure) + " Pa, gamma " + std::to_string(c.gamma);
+    MaterialParameters m = perfectly_plastic_with_damage(EquationOfState::Linear, 2e4);
+    m.crack_friction = c.mu_c;
+    m.taylor_quinney = 0.9;  // heats (by ~15 K); with m = 50 the flow stress does not feel it (T*^m ~ 1e-100)
+    m.jc_m = 50.0;
+    const JohnsonCookMaterial jc(m);
+    MaterialPointDriver d(jc, 298.0, 5e-6);
+    Particles& p = d.particles();
+    p.damage_initiation[0] = 1.0;
+    p.damage[0] = c.D;
+    p.initiation_yield_stress[0] = A;
+    p.fracture_energy[0] = 2e4;
+    p.plastic_displacement[0] = c.D * 2 * 2e4 / A;
+    p.effective_stress[0] = {-c.pressure, -c.pressure, -c.pressure, 0.0};
+    const double T0 = p.temperature[0], mass = p.mass[0], stored0 = jc.elastic_energy(p, 0);
+    const int steps = 4000;
+    const double rate = 1e3, dt = c.gamma / rate / steps;
+    double work = 0.0;  // the stress's work per unit volume x V, trapezoid over the steps
+    for (int k = 0; k < steps; ++k) {
+      const double before = d.last().stress.xy * d.last().volume;
+      const MaterialPointRecord r = d.step(simple_shear(rate), dt);
+      work += 0.5 * (before + r.stress.xy * r.volume) * rate * dt;
+    }
+    const MaterialPointRecord& r = d.last();
+    EXPECT_EQ(r.damage, c.D) << what;
+    const double tau = r.stress.deviator().von_mises() / std::sqrt(3.0);
+    EXPECT_NEAR(tau, c.expected_tau, 0.005 * c.expected_tau + 1e-3) << what;
+    // tension degraded (5.5), none left once failed
+    const double pressure = c.pressure > 0.0 ? c.pressure : (c.D < failed ? 1 - c.D : 0.0) * c.pressure;
+    EXPECT_NEAR(-r.stress.mean(), pressure, 1e-6 * std::abs(pressure) + 1e-3) << what;
+    const ConstitutiveIncrement& e = r.cumulative;
+    EXPECT_EQ(e.damage_dissipation, 0.0) << what;
+    // chi of the intact part's plastic work, all of the crack's friction
+    EXPECT_GE(e.heat, 0.9 * e.plastic_work - 1e-6) << what;
+    EXPECT_LE(e.heat, e.plastic_work + 1e-6) << what;
+    EXPECT_NEAR(mass * m.specific_heat * (r.temperature - T0), e.heat, 1e-9 * e.heat + 1e-6) << what;
+    const double stored = r.elastic_energy - stored0;
+    EXPECT_NEAR(stored + e.plastic_work, work, 0.005 * work + 1e-3) << what;
+    if (c.gamma > 0.01) EXPECT_GT(e.plastic_work, 0.0) << what;
+    // theory §7.1: the wave speed sees the shear stiffness of the share k the particle carries.
+    const double k = r.stress.deviator().von_mises() / r.effective_stress.deviator().von_mises();
+    EXPECT_NEAR(jc.wave_speed(d.particles(), 0),
+                std::sqrt((m.bulk_modulus() + k * 4.0 / 3.0 * G) / std::max(r.density, m.density)), 1e-9 * 6000.0)
+        << what;
+  }
+}
+
 // theory §3, Eq. (3.2) through the update: with Mie-Grueneisen the pressure is p(rho, T) of the current
 // density mass/volume and the end-of-step temperature; the wave speed uses the current tangent modulus.
 TEST(JohnsonCookMaterialPoint, MieGruneisenPressureFollowsDensity) {

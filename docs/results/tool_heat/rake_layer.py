@@ -17,6 +17,8 @@ import sys
 import meshio
 import numpy as np
 
+MAX_DAMAGE = 0.999  # the material sets' max_damage: D at which a particle counts as failed
+
 
 def bands(run_dir):
     scene = open(os.path.join(run_dir, "scene.toml")).read()
@@ -38,19 +40,23 @@ def bands(run_dir):
     for lo, hi in ((0, 1), (1, 2), (2, 4)):
         sel = (x < face_x - lo * h) & (x >= face_x - hi * h) & (y > arc_top) & (y < arc_top + contact)
         D, T, sxy = d["damage"][sel], d["temperature_K"][sel], d["stress_Pa"][sel][:, 3]
-        rows.append((f"{lo}-{hi}", int(sel.sum()), D.mean(), 100 * (D > 0.5).mean(), T.mean(), np.abs(sxy).mean() / 1e6))
+        failed = 100 * (D >= MAX_DAMAGE).mean()  # fully failed: no shear at all, whatever the pressure
+        p = -d["stress_Pa"][sel][:, :3].mean(axis=1)
+        rows.append((f"{lo}-{hi}", int(sel.sum()), D.mean(), 100 * (D > 0.5).mean(), failed, T.mean(), p.mean() / 1e6,
+                     np.abs(sxy).mean() / 1e6))
     return contact, rows
 
 
 def main(dirs):
-    print("| run | contact (µm) | cells in front of the face | particles | mean D | D > 0.5 (%) | mean T (K) | "
-          "mean abs(σ_xy) (MPa) |")
-    print("|---|---|---|---|---|---|---|---|")
+    print("| run | contact (µm) | cells in front of the face | particles | mean D | D > 0.5 (%) | failed (%) | "
+          "mean T (K) | mean pressure (MPa) | mean abs(σ_xy) (MPa) |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
     for run_dir in dirs:
         contact, rows = bands(run_dir)
         name = "/".join(os.path.normpath(run_dir).split(os.sep)[-2:])
-        for band, n, D, over, T, sxy in rows:
-            print(f"| {name} | {contact * 1e6:.0f} | {band} | {n} | {D:.2f} | {over:.0f} | {T:.0f} | {sxy:.0f} |")
+        for band, n, D, over, failed, T, p, sxy in rows:
+            print(f"| {name} | {contact * 1e6:.0f} | {band} | {n} | {D:.2f} | {over:.0f} | {failed:.0f} | {T:.0f} | "
+                  f"{p:.0f} | {sxy:.0f} |")
 
 
 if __name__ == "__main__":
