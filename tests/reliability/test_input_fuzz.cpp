@@ -62,6 +62,7 @@ const std::vector<std::pair<std::string, std::string>> kAllowed = {
     {"thermal_conductivity", "0"}, {"strain_rate_smoothing_time", "0"}, {"bulk_viscosity_linear", "0"},
     {"bulk_viscosity_quadratic", "0"}, {"mg_s", "0"}, {"mg_gamma0", "0"}, {"taylor_quinney", "0"},
     {"fracture_transition_strain_rate", "0"}, {"poisson_ratio", "0"}, {"specific_heat", "0"}, {"fracture_energy", "0"},
+    {"crack_friction", "0"},
 };
 
 // Allowed in some cases and refused in others, with a message naming the key: conduction needs a
