@@ -82,7 +82,8 @@ inline const ParameterTable<DamageParameters>& damage_parameter_table() {
                  Range::closed(0.0, 10.0, "", "0 = a damaged particle's shear is (1 - D) of the undamaged shear"),
                  "mu_c: a damaged particle under compression p keeps, of the shear its damage takes away, up to "
                  "mu_c p: Coulomb friction across its closed crack (theory_materials.md §5.8)")
-              .used_with(InUse::Damage),
+              .used_with(InUse::Damage)
+              .written_if_set(),
       },
       {}};
   return table;
