@@ -63,12 +63,6 @@ class JohnsonCookDamage {
     const double limit = std::numbers::sqrt3 * crack_friction_ * pressure;
     return limit < q ? limit / q : 1.0;
   }
-  // k = 1 - D (1 - phi): the share of its undamaged deviator that a damaged, not failed, particle carries. Its
-  // equivalent shear is (1 - D) q/sqrt(3) + D min(q/sqrt(3), mu_c p): the intact part and the closed crack's friction.
-  double deviator_share(double damage, double pressure, double q) const {
-    if (!(damage > 0.0)) return 1.0;
-    return 1.0 - damage * (1.0 - closed_crack_share(pressure, q));
-  }
 
   // JC failure strain. log_rate_ratio = max(ln(epsdot/epsdot0), 0), homologous_temperature in [0, 1].
   double failure_strain(double triaxiality, double log_rate_ratio, double homologous_temperature) const;
@@ -111,11 +105,18 @@ class JohnsonCookDamage {
   double crack_friction_;  // mu_c
 };
 
+// k = 1 - D (1 - phi) of the degradation above: the share of its undamaged deviator that a damaged, not failed,
+// particle carries, phi its closed crack's share (JohnsonCookDamage::closed_crack_share). Its equivalent shear is
+// (1 - D) q/sqrt(3) + D min(q/sqrt(3), mu_c p): the intact part and the closed crack's friction.
+inline double deviator_share(double damage, double closed_crack_share) {
+  return 1.0 - damage * (1.0 - closed_crack_share);
+}
+
 // eta = -p/q (tension positive; pressure p positive in compression); 0 when q = 0.
 inline double stress_triaxiality(double pressure, double q) { return q > 0.0 ? -pressure / q : 0.0; }
 
 // The Cauchy stress carried by a damaged particle from its undamaged deviator and pressure; deviator_share is
-// JohnsonCookDamage::deviator_share (1 - D without crack friction), for a failed particle the closed crack's share
+// deviator_share above (1 - D without crack friction), for a failed particle the closed crack's share
 // phi (0 without crack friction).
 PlaneStrainTensor degraded_stress(const PlaneStrainTensor& effective_deviator, double pressure, double damage,
                                   double deviator_share, bool failed);

@@ -260,7 +260,7 @@ ConstitutiveIncrement JohnsonCookMaterial::update(Particles& p, std::size_t i, c
 
   // 8. Store the state: undamaged stress (no viscosity) for the next step, degraded stress for forces.
   p.effective_stress[i] = s.plus_identity(-pressure);
-  p.stress[i] = degraded_stress(s, pressure + viscous_pressure, D, failed ? phi : 1.0 - D * (1.0 - phi), failed);
+  p.stress[i] = degraded_stress(s, pressure + viscous_pressure, D, failed ? phi : deviator_share(D, phi), failed);
   p.plastic_strain[i] = eps0 + dep;
   p.plastic_strain_rate[i] = rate;
   p.temperature[i] = T;
@@ -285,7 +285,7 @@ double JohnsonCookMaterial::wave_speed(const Particles& p, std::size_t i) const 
   // almost no stress (seen in cuts: dt fell 4x).
   const double D = damage_.enabled() ? p.damage[i] : 0.0;
   const double bulk = density < params_.density ? (1.0 - D) * K : K;
-  const double share = D > 0.0 ? 1.0 - D * (1.0 - closed_crack_share(p, i)) : 1.0;
+  const double share = D > 0.0 ? deviator_share(D, closed_crack_share(p, i)) : 1.0;
   return std::sqrt((bulk + share * 4.0 / 3.0 * G_) / density);
 }
 

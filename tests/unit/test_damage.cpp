@@ -218,12 +218,14 @@ TEST(JohnsonCookDamage, ClosedCrackShareIsTheIntactPartPlusFriction) {
   m.crack_friction = 0.5;
   const JohnsonCookDamage d(m);
   const double q = std::sqrt(3.0) * 5e8;
-  const auto tau = [&](const JohnsonCookDamage& model, double p) { return model.deviator_share(0.8, p, q) * 5e8; };
+  const auto tau = [&](const JohnsonCookDamage& model, double p) {
+    return deviator_share(0.8, model.closed_crack_share(p, q)) * 5e8;
+  };
   EXPECT_NEAR(tau(d, 4e8), 2.6e8, 1e-6);
   EXPECT_NEAR(tau(d, 2e9), 5e8, 1e-6);
   EXPECT_NEAR(tau(d, -4e8), 1e8, 1e-6);
   EXPECT_NEAR(tau(d, 0.0), 1e8, 1e-6);
-  EXPECT_EQ(d.deviator_share(0.0, 4e8, q), 1.0);  // undamaged: all of it
+  EXPECT_EQ(deviator_share(0.0, d.closed_crack_share(4e8, q)), 1.0);  // undamaged: all of it
   const JohnsonCookDamage without(ti64_damage());
   EXPECT_FALSE(without.has_crack_friction());
   EXPECT_NEAR(tau(without, 2e9), 1e8, 1e-6);
