@@ -29,6 +29,7 @@ MaterialParameters everything_on() {
   m.mg_gamma0 = 1.23;
   m.fracture_transition_strain_rate = 2e6;
   m.fracture_energy_brittle = 5e3;
+  m.crack_friction = 0.5;
   return m;
 }
 
@@ -148,7 +149,7 @@ TEST(ParameterTables, KeysWrittenOnlyIfSetAreLeftOutAtTheirDefault) {
   const MaterialParameters m = testing::with_jc_damage(testing::ti64_johnson_1985());
   std::ostringstream text;
   write_material(m, text);
-  for (const char* key : {"flow_softening", "tanh_a", "tanh_b", "tanh_c", "tanh_d", "tanh_s"})
+  for (const char* key : {"flow_softening", "tanh_a", "tanh_b", "tanh_c", "tanh_d", "tanh_s", "crack_friction"})
     EXPECT_EQ(text.str().find(std::string("\n") + key + " = "), std::string::npos) << key;
   MaterialLibrary lib;
   lib.add_file(text.str(), "m.toml");
