@@ -292,9 +292,7 @@ double JohnsonCookMaterial::wave_speed(const Particles& p, std::size_t i) const 
 double JohnsonCookMaterial::closed_crack_share(const Particles& p, std::size_t i) const {
   if (!damage_.has_crack_friction()) return 0.0;  // no stress needed: the hot path of most runs
   const PlaneStrainTensor& sigma = p.effective_stress[i];
-  const double pressure = -sigma.mean();
-  const PlaneStrainTensor s = sigma.plus_identity(pressure);
-  return damage_.closed_crack_share(pressure, std::sqrt(1.5 * s.contract(s)));
+  return damage_.closed_crack_share(-sigma.mean(), sigma.von_mises());
 }
 
 double JohnsonCookMaterial::elastic_energy(const Particles& p, std::size_t i) const {
