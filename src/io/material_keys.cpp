@@ -157,6 +157,16 @@ std::string material_key_unit(std::string_view key) {
   return unit;
 }
 
+std::map<std::string, double> numeric_material_keys(const MaterialParameters& m) {
+  std::map<std::string, double> keys;
+  for_each_parameter_table([&]<class P>(const ParameterTable<P>& table) {
+    const P& p = m;
+    for (const Parameter<P>& row : table.parameters)
+      if (row.kind == Parameter<P>::Kind::Number) keys[std::string(row.key)] = p.*row.number;
+  });
+  return keys;
+}
+
 std::string material_keys_markdown() {
   std::string out =
       "| key | unit | default | allowed | meaning |\n"

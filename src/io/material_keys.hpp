@@ -2,6 +2,7 @@
 // The keys of a [[material]] table, made from the physics models' parameter tables
 // (physics/material_parameters.hpp): reading them, reporting a broken rule at its key in the file,
 // writing them back, and their reference table in docs/input.md (`mpmcut keys --markdown`).
+#include <map>
 #include <ostream>
 #include <string>
 #include <string_view>
@@ -25,6 +26,10 @@ void write_material_keys(const MaterialParameters& m, std::ostream& out);
 // The unit of a numeric [[material]] key as the reference table writes it ("Pa", "J/m^2"); empty for a ratio
 // ("-") and for a key that is not a numeric parameter.
 std::string material_key_unit(std::string_view key);
+
+// Every numeric [[material]] key with its value in `m`, written-if-set keys at their default included (the keys a
+// calibration may free or fix).
+std::map<std::string, double> numeric_material_keys(const MaterialParameters& m);
 
 // The markdown table of every [[material]] key: unit, default, allowed values, meaning.
 std::string material_keys_markdown();

@@ -59,6 +59,18 @@ std::string column_name(const CalibrationParameter& p) {
   return p.name + "_" + unit;
 }
 
+// The tool's heat as the runs had it ("" for an adiabatic tool), for the provenance of the set: a set fitted with
+// a conducting tool is another set with an adiabatic one.
+std::string tool_heat_text(const ConditionRunSettings& r) {
+  std::string out;
+  if (r.tool_heat_transfer_coefficient) out += fmt::format("; tool heat transfer coefficient {:g} W/(m^2 K)", *r.tool_heat_transfer_coefficient);
+  if (r.tool_conductivity) out += fmt::format(", conducting tool {:g} W/(m K)", *r.tool_conductivity);
+  if (r.tool_volumetric_heat_capacity) out += fmt::format(", rho c {:g} J/(m^3 K)", *r.tool_volumetric_heat_capacity);
+  if (r.tool_temperature) out += fmt::format(", tool at {:g} K", *r.tool_temperature);
+  if (r.friction_heat_share) out += fmt::format("; frictional heat share into the workpiece {:g}", *r.friction_heat_share);
+  return out;
+}
+
 CuttingCondition cutting_condition(const MeasuredForces& m) {
   CuttingCondition c = force_condition(m);
   c.id = condition_id(m);
@@ -474,7 +486,8 @@ void Calibrator::write_results(const Evaluation& best, const std::vector<Conditi
                       : fmt::format("Coulomb friction {} fixed ({})", c_.runs.friction, c_.runs.friction_note)) +
       fmt::format("; tool: each row's edge_radius_um, and its rake_deg / clearance_deg where the measurement file "
                   "gives them, else rake {:g} deg and clearance {:g} deg (the preset's, ASSUMED)",
-                  preset.rake_angle_deg, preset.clearance_angle_deg);
+                  preset.rake_angle_deg, preset.clearance_angle_deg) +
+      tool_heat_text(c_.runs);
   write_file_atomically(out_ / "best_material.toml", [&](std::ostream& s) {
     s << "# Calibrated by `mpmcut calibrate " << c_.file.string() << "` on " << date << ".\n";
     s << "# Data: " << c_.measurements_source << "; training conditions (h, vc): " << training_list << ".\n";
@@ -489,6 +502,7 @@ void Calibrator::write_results(const Evaluation& best, const std::vector<Conditi
     s << fmt::format("library = \"{}\"\n", c_.base_material);
     s << fmt::format("citation = \"mpmcut calibrate {}: {} fitted to {} training condition(s) of {}, objective {:.4g}\"\n",
                      date, c_.base_material, c_.training.size(), c_.measurements_source, best.objective);
+    for (const auto& [key, value] : c_.runs.material_overrides) s << fmt::format("{} = {}  # fixed\n", key, value);
     for (std::size_t i = 0; i < c_.parameters.size(); ++i)
       if (c_.parameters[i].name != "friction") s << fmt::format("{} = {}\n", c_.parameters[i].name, best.values[i]);
   });

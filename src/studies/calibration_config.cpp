@@ -3,7 +3,6 @@
 #include <cmath>
 #include <fstream>
 #include <map>
-#include <sstream>
 
 #include <fmt/format.h>
 #include <nlopt.h>
@@ -21,18 +20,6 @@ namespace mpmcut {
 namespace {
 
 namespace fs = std::filesystem;
-
-// The numeric keys of a material set with their values, as the scene writer spells them: the keys a
-// calibration may free. Taken from the writer so that a new material parameter needs no change here.
-std::map<std::string, double> numeric_material_keys(const MaterialParameters& m) {
-  std::ostringstream text;
-  write_material(m, text);
-  const toml::table t = toml::parse(text.str());
-  std::map<std::string, double> keys;
-  for (const auto& [key, node] : *t["material"][0].as_table())
-    if (node.is_number()) keys[std::string(key.str())] = node.value<double>().value();
-  return keys;
-}
 
 // Whether the base set with `key = value` is a valid material; the reader's message if not.
 std::string material_problem(const std::string& base, const std::string& key, double value) {
@@ -116,7 +103,51 @@ CalibrationConfig read_calibration_config(const fs::path& file, std::string_view
     };
     c.runs.contact_detection = solver_choice("contact_detection", contact_detection_names());
     c.runs.volumetric_average = solver_choice("volumetric_average", volumetric_average_names());
+    // The tool's heat, as validate's thermal options (none given: an adiabatic tool, the case text as before).
+    const auto thermal = [&](const char* key, double lo, double hi, const char* allowed) {
+      std::optional<double> value = r->optional_number(key);
+      if (value) r->check(key, std::isfinite(*value) && *value >= lo && *value <= hi, allowed, *value);
+      return value;
+    };
+    c.runs.friction_heat_share = thermal("friction_heat_share", 0.0, 1.0, "a share in [0, 1]");
+    c.runs.tool_heat_transfer_coefficient =
+        thermal("tool_heat_transfer_coefficient", 0.0, 1e9, "a coefficient in [0, 1e9] W/(m^2 K)");
+    c.runs.tool_temperature = thermal("tool_temperature", 1.0, 1e4, "a temperature in [1, 1e4] K");
+    c.runs.tool_conductivity = thermal("tool_conductivity", 0.0, 1e4, "a conductivity in [0, 1e4] W/(m K)");
+    c.runs.tool_volumetric_heat_capacity =
+        thermal("tool_volumetric_heat_capacity", 0.0, 1e9, "a heat capacity in [0, 1e9] J/(m^3 K)");
+    // The conditions the case reader puts on them, here, before any run (cutting/cutting_input.cpp).
+    if (c.runs.tool_conductivity.value_or(0.0) > 0.0) {
+      r->check("tool_conductivity", c.runs.tool_heat_transfer_coefficient.value_or(0.0) > 0.0,
+               "0 unless tool_heat_transfer_coefficient > 0 (the heat enters the tool through it)",
+               *c.runs.tool_conductivity);
+      r->check("tool_conductivity", c.runs.friction_heat_share.value_or(1.0) == 1.0,
+               "0 unless friction_heat_share = 1 (a conducting tool takes its part of the frictional heat by "
+               "conduction)",
+               *c.runs.tool_conductivity);
+    } else if (c.runs.tool_volumetric_heat_capacity) {
+      r->check("tool_volumetric_heat_capacity", *c.runs.tool_volumetric_heat_capacity == 0.0,
+               "0 unless tool_conductivity > 0 (only a conducting tool stores heat)",
+               *c.runs.tool_volumetric_heat_capacity);
+    }
     r->reject_unknown_keys();
+  }
+
+  // Material keys held at other values than the base set's: part of the fitted set, not free.
+  std::map<std::string, double> fixed;
+  if (auto f = t.optional_table("fixed")) {
+    std::vector<std::string> given;  // in toml++'s order (by name)
+    for (const auto& [key, node] : *root["fixed"].as_table()) given.emplace_back(key.str());
+    for (const std::string& key : given) {
+      if (!keys.contains(key))
+        f->fail(key, fmt::format("unknown key \"{}\": a fixed key is a numeric key of the material set \"{}\": {}", key,
+                                 c.base_material, key_list));
+      const double value = f->number(key, 0.0);
+      if (const std::string problem = material_problem(c.base_material, key, value); !problem.empty())
+        f->fail(key, fmt::format("the material is not valid with this value: {}", problem));
+      fixed[key] = value;
+      c.runs.material_overrides.emplace_back(key, value);
+    }
   }
 
   // The free parameters.
@@ -135,6 +166,8 @@ CalibrationConfig read_calibration_config(const fs::path& file, std::string_view
                                  q.name, c.base_material, key_list));
     for (const CalibrationParameter& other : c.parameters)
       if (other.name == q.name) p.fail("name", fmt::format("\"{}\" is already free (at {})", q.name, other.location));
+    if (fixed.contains(q.name))
+      p.fail("name", fmt::format("\"{}\" is fixed in [fixed]: a key is free or fixed, not both", q.name));
     p.require_key("min", "lower bound, in the key's unit");
     p.require_key("max", "upper bound, in the key's unit");
     q.min = p.number("min", 0.0);

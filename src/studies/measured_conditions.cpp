@@ -346,19 +346,24 @@ std::string condition_case_text(const CuttingCondition& c, const ConditionRunSet
                    : c.edge_radius_given ? "from the chip observations"
                                          : "preset default: not stated in the source");
   s += fmt::format("friction = {}  # {}\n", o.friction, o.friction_note);
+  // Where a thermal setting came from: validate's option, or the calibration's [runs] key of the same name.
+  const auto chosen = [&](const char* option) {
+    return o.purpose == "calibration" ? std::string("chosen in the calibration's [runs]")
+                                      : fmt::format("chosen with {}", option);
+  };
   if (o.friction_heat_share)
-    s += fmt::format("friction_heat_share = {}  # chosen with --friction-heat-share (the rest flows into the tool)\n",
-                     *o.friction_heat_share);
+    s += fmt::format("friction_heat_share = {}  # {} (the rest flows into the tool)\n", *o.friction_heat_share,
+                     chosen("--friction-heat-share"));
   if (o.tool_heat_transfer_coefficient)
-    s += fmt::format("tool_heat_transfer_coefficient = {}  # W/(m^2 K), chosen with --tool-heat-transfer-coefficient\n",
-                     *o.tool_heat_transfer_coefficient);
+    s += fmt::format("tool_heat_transfer_coefficient = {}  # W/(m^2 K), {}\n", *o.tool_heat_transfer_coefficient,
+                     chosen("--tool-heat-transfer-coefficient"));
   if (o.tool_temperature)
-    s += fmt::format("tool_temperature = {}  # K, chosen with --tool-temperature\n", *o.tool_temperature);
+    s += fmt::format("tool_temperature = {}  # K, {}\n", *o.tool_temperature, chosen("--tool-temperature"));
   if (o.tool_conductivity)
-    s += fmt::format("tool_conductivity = {}  # W/(m K), chosen with --tool-conductivity\n", *o.tool_conductivity);
+    s += fmt::format("tool_conductivity = {}  # W/(m K), {}\n", *o.tool_conductivity, chosen("--tool-conductivity"));
   if (o.tool_volumetric_heat_capacity)
-    s += fmt::format("tool_volumetric_heat_capacity = {}  # J/(m^3 K), chosen with --tool-volumetric-heat-capacity\n",
-                     *o.tool_volumetric_heat_capacity);
+    s += fmt::format("tool_volumetric_heat_capacity = {}  # J/(m^3 K), {}\n", *o.tool_volumetric_heat_capacity,
+                     chosen("--tool-volumetric-heat-capacity"));
   s += fmt::format("cell_size = {}  # {}\n", cell,
                    o.quick ? "quick: t0/4 (pipeline check, not converged)"
                    : o.cells_per_thermal_length > 0.0

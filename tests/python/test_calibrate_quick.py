@@ -6,7 +6,8 @@ condition, a budget of 3 evaluations: 2 of CRS2, then BOBYQA from the best point
   - exit 0; evaluations.csv has 3 rows; its objective column equals the weighted RMS relative error
     recomputed here from the per-condition forces and the measured means of the data file (b = 1 mm);
   - the local stage's point is the best global one (replayed from the cache, not run again);
-  - best_material.toml is a [[material]] with library, the free material key, and its provenance;
+  - best_material.toml is a [[material]] with library, the free material key, the [fixed] one (crack_friction), and
+    its provenance with the [runs] conducting tool;
   - calibration.md has the training and the held-back errors; convergence.png and parity.png exist;
   - resume after a kill -9 (cache.jsonl cut to its first evaluation plus half a line): one evaluation
     is evaluated again, its complete runs kept (not rerun), the other replays, and evaluations.csv comes out
@@ -89,10 +90,11 @@ def main(binary, scratch):
     with open(os.path.join(out, "best_material.toml"), "rb") as f:
         toml = tomllib.load(f)
     m = toml["material"][0]
-    if m["name"] != "ti64-test-fit" or m["library"] != "ti64-cutting" or m["jc_A"] != float(best["jc_A_Pa"]):
+    if (m["name"] != "ti64-test-fit" or m["library"] != "ti64-cutting" or m["jc_A"] != float(best["jc_A_Pa"])
+            or m.get("crack_friction") != 0.5):
         fail(f"best_material.toml: {m}")
     text = read(os.path.join(out, "best_material.toml"))
-    for word in ("Data:", "Objective:", "Budget:", "Process:", "friction = ", "seed 7"):
+    for word in ("Data:", "Objective:", "Budget:", "Process:", "friction = ", "seed 7", "conducting tool 86 W/(m K)"):
         if word not in text:
             fail(f"best_material.toml has no '{word}'")
     md = read(os.path.join(out, "calibration.md"))

@@ -2,6 +2,7 @@
 // (studies/calibration.hpp, read_calibration_config).
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <utility>
 #include <vector>
@@ -134,6 +135,57 @@ TEST(CalibrationConfig, VolumetricAverageReachesTheCaseFiles) {
   const std::string e = error_of(base + "[runs]\nvolumetric_average = \"bbar\"\n");
   EXPECT_NE(e.find("runs.volumetric_average"), std::string::npos) << e;
   EXPECT_NE(e.find("\"nodal\""), std::string::npos) << e;
+}
+
+// [runs] tool heat (as validate's thermal options) reaches every case file, and the case parses with a conducting
+// tool; a conducting tool without a heat transfer coefficient is named at its key before anything runs.
+TEST(CalibrationConfig, ToolHeatReachesTheCaseFiles) {
+  const std::string base = "name = \"fit\"\n" + kParameter + kData;
+  const CuttingCondition condition{"h0.1mm_vc100mpmin", "forces", 100.0 / 60.0, 0.1, 34.4};
+  const CalibrationConfig adiabatic = read_calibration_config(write("adiabatic.toml", base), kMeasurements);
+  EXPECT_EQ(condition_case_text(condition, adiabatic.runs).find("tool_"), std::string::npos);
+
+  const CalibrationConfig conducting = read_calibration_config(
+      write("conducting.toml", base + "[runs]\ntool_heat_transfer_coefficient = 1e7\ntool_conductivity = 86\n"),
+      kMeasurements);
+  const std::string text = condition_case_text(condition, conducting.runs);
+  EXPECT_NE(text.find("tool_conductivity = 86  # W/(m K), chosen in the calibration's [runs]"), std::string::npos)
+      << text;
+  const Case c = parse_case(text, "case.toml");
+  EXPECT_EQ(c.cutting->tool_conductivity, 86.0);
+  EXPECT_EQ(c.cutting->tool_heat_transfer_coefficient, 1e7);
+
+  std::string e = error_of(base + "[runs]\ntool_conductivity = 86\n");
+  EXPECT_NE(e.find("calibration.toml:"), std::string::npos) << e;
+  EXPECT_NE(e.find("runs.tool_conductivity"), std::string::npos) << e;
+  EXPECT_NE(e.find("tool_heat_transfer_coefficient > 0"), std::string::npos) << e;
+  e = error_of(base + "[runs]\nfriction_heat_share = 1.5\n");
+  EXPECT_NE(e.find("runs.friction_heat_share"), std::string::npos) << e;
+  EXPECT_NE(e.find("[0, 1]"), std::string::npos) << e;
+}
+
+// [fixed] material keys run in every case beside the free ones and are written into best_material.toml's set; an
+// unknown key, a key both fixed and free, and a value that makes no valid material are named at their lines.
+TEST(CalibrationConfig, FixedKeysReachTheCaseFilesAndAreChecked) {
+  const std::string base = "name = \"fit\"\n" + kParameter + kData;
+  const CuttingCondition condition{"h0.1mm_vc100mpmin", "forces", 100.0 / 60.0, 0.1, 34.4};
+  const CalibrationConfig c = read_calibration_config(
+      write("fixed.toml", base + "[fixed]\ncrack_friction = 0.5\njc_n = 0.3\n"), kMeasurements);
+  ASSERT_EQ(c.runs.material_overrides.size(), 2u);
+  const std::string text = condition_case_text(condition, c.runs);
+  EXPECT_NE(text.find("crack_friction = 0.5\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("jc_n = 0.3\n"), std::string::npos) << text;
+  EXPECT_NO_THROW(parse_case(text, "case.toml"));
+
+  std::string e = error_of(base + "[fixed]\njc_Q = 1\n");
+  EXPECT_NE(e.find("calibration.toml:"), std::string::npos) << e;
+  EXPECT_NE(e.find("fixed.jc_Q"), std::string::npos) << e;
+  EXPECT_NE(e.find("unknown key"), std::string::npos) << e;
+  e = error_of(base + "[fixed]\njc_A = 800e6\n");
+  EXPECT_NE(e.find("\"jc_A\" is fixed in [fixed]"), std::string::npos) << e;
+  e = error_of(base + "[fixed]\njc_n = -1\n");
+  EXPECT_NE(e.find("fixed.jc_n"), std::string::npos) << e;
+  EXPECT_NE(e.find("not valid"), std::string::npos) << e;
 }
 
 // A condition's own cells_per_feed reaches its case file; the others keep [runs] cells_per_feed; a value outside
@@ -370,6 +422,22 @@ TEST(CalibrationParameter, StartValueRoundTripsExactly) {
   const CalibrationParameter q{"jc_A", 550e6, 1100e6, 724.7e6, false, ""};
   EXPECT_EQ(parameter_value(q, parameter_unit(q, q.start)), 724.7e6);
   EXPECT_DOUBLE_EQ(parameter_value(q, 0.5), 825e6);
+}
+
+// Every shipped configuration (cases/calibration/) reads against the built-in measurements: a README's command must
+// not stop at its first line.
+TEST(CalibrationConfig, ShippedConfigurationsRead) {
+  const fs::path root(MPMCUT_SOURCE_DIR);
+  std::ifstream in(root / kBuiltinForcesFile);
+  const std::string forces((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_FALSE(forces.empty());
+  int read = 0;
+  for (const auto& entry : fs::directory_iterator(root / "cases" / "calibration")) {
+    if (entry.path().extension() != ".toml") continue;
+    EXPECT_NO_THROW(read_calibration_config(entry.path(), forces)) << entry.path();
+    ++read;
+  }
+  EXPECT_GE(read, 7);
 }
 
 }  // namespace
