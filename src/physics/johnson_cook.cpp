@@ -304,11 +304,13 @@ double JohnsonCookMaterial::elastic_energy(const Particles& p, std::size_t i) co
   const double D = damage_.enabled() ? p.damage[i] : 0.0;
   const bool failed = damage_.failed(D);
   const double keep = failed ? 0.0 : 1.0 - D;
-  const double phi = D > 0.0 ? closed_crack_share(p, i) : 0.0;
+  const double s_s = s.contract(s);
+  const double phi = D > 0.0 && damage_.has_crack_friction() ? damage_.closed_crack_share(pressure, std::sqrt(1.5 * s_s))
+                                                              : 0.0;
   const double keep_dev = failed ? phi * phi : 1.0 - D * (1.0 - phi * phi);  // the slider stores D phi^2 (§5.8)
   const double K = eos_.bulk_modulus(solid_density(p, i));
   const double vol = pressure * pressure / (2.0 * K) * (pressure >= 0.0 ? 1.0 : keep);
-  return p.volume[i] * (keep_dev * s.contract(s) / (4.0 * G_) + vol);
+  return p.volume[i] * (keep_dev * s_s / (4.0 * G_) + vol);
 }
 
 }  // namespace mpmcut
