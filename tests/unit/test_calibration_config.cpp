@@ -31,6 +31,9 @@ constexpr const char* kMeasurements =
 
 const std::string kParameter = "[[parameter]]\nname = \"jc_A\"\nmin = 700e6\nmax = 1000e6\n";
 const std::string kData = "[data]\ntraining = [{h_mm = 0.1, vc_m_per_min = 100.0}]\n";
+// The least valid configuration, and the condition whose case text the [runs] and [fixed] tests read.
+const std::string kMinimal = "name = \"fit\"\n" + kParameter + kData;
+const CuttingCondition kCondition{"h0.1mm_vc100mpmin", "forces", 100.0 / 60.0, 0.1, 34.4};
 
 fs::path write(const std::string& name, const std::string& text) {
   // One directory per process: test runs of several checkouts at once must not share files.
@@ -96,8 +99,8 @@ TEST(CalibrationConfig, BoundOutsideTheMaterialsValidRange) {
 // [runs] contact_detection reaches every run's case file, as validate --contact-detection; absent, the case
 // files have no [solver] table (so configurations written before the key run the same cases).
 TEST(CalibrationConfig, ContactDetectionReachesTheCaseFiles) {
-  const std::string base = "name = \"fit\"\n" + kParameter + kData;
-  const CuttingCondition condition{"h0.1mm_vc100mpmin", "forces", 100.0 / 60.0, 0.1, 34.4};
+  const std::string& base = kMinimal;
+  const CuttingCondition& condition = kCondition;
   const CalibrationConfig node = read_calibration_config(write("node.toml", base), kMeasurements);
   EXPECT_EQ(node.runs.contact_detection, "");
   EXPECT_EQ(condition_case_text(condition, node.runs).find("contact_detection"), std::string::npos);
@@ -118,8 +121,8 @@ TEST(CalibrationConfig, ContactDetectionReachesTheCaseFiles) {
 // [runs] volumetric_average likewise, in the same [solver] table as the contact; the case text parses and its scene
 // carries it.
 TEST(CalibrationConfig, VolumetricAverageReachesTheCaseFiles) {
-  const std::string base = "name = \"fit\"\n" + kParameter + kData;
-  const CuttingCondition condition{"h0.1mm_vc100mpmin", "forces", 100.0 / 60.0, 0.1, 34.4};
+  const std::string& base = kMinimal;
+  const CuttingCondition& condition = kCondition;
   const CalibrationConfig off = read_calibration_config(write("off.toml", base), kMeasurements);
   EXPECT_EQ(condition_case_text(condition, off.runs).find("volumetric_average"), std::string::npos);
 
@@ -140,8 +143,8 @@ TEST(CalibrationConfig, VolumetricAverageReachesTheCaseFiles) {
 // [runs] tool heat (as validate's thermal options) reaches every case file, and the case parses with a conducting
 // tool; a conducting tool without a heat transfer coefficient is named at its key before anything runs.
 TEST(CalibrationConfig, ToolHeatReachesTheCaseFiles) {
-  const std::string base = "name = \"fit\"\n" + kParameter + kData;
-  const CuttingCondition condition{"h0.1mm_vc100mpmin", "forces", 100.0 / 60.0, 0.1, 34.4};
+  const std::string& base = kMinimal;
+  const CuttingCondition& condition = kCondition;
   const CalibrationConfig adiabatic = read_calibration_config(write("adiabatic.toml", base), kMeasurements);
   EXPECT_EQ(condition_case_text(condition, adiabatic.runs).find("tool_"), std::string::npos);
 
@@ -167,8 +170,8 @@ TEST(CalibrationConfig, ToolHeatReachesTheCaseFiles) {
 // [fixed] material keys run in every case beside the free ones and are written into best_material.toml's set; an
 // unknown key, a key both fixed and free, and a value that makes no valid material are named at their lines.
 TEST(CalibrationConfig, FixedKeysReachTheCaseFilesAndAreChecked) {
-  const std::string base = "name = \"fit\"\n" + kParameter + kData;
-  const CuttingCondition condition{"h0.1mm_vc100mpmin", "forces", 100.0 / 60.0, 0.1, 34.4};
+  const std::string& base = kMinimal;
+  const CuttingCondition& condition = kCondition;
   const CalibrationConfig c = read_calibration_config(
       write("fixed.toml", base + "[fixed]\ncrack_friction = 0.5\njc_n = 0.3\n"), kMeasurements);
   ASSERT_EQ(c.runs.material_overrides.size(), 2u);
