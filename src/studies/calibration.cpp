@@ -63,11 +63,14 @@ std::string column_name(const CalibrationParameter& p) {
 // a conducting tool is another set with an adiabatic one.
 std::string tool_heat_text(const ConditionRunSettings& r) {
   std::string out;
-  if (r.tool_heat_transfer_coefficient) out += fmt::format("; tool heat transfer coefficient {:g} W/(m^2 K)", *r.tool_heat_transfer_coefficient);
+  if (r.tool_heat_transfer_coefficient)
+    out += fmt::format("; tool heat transfer coefficient {:g} W/(m^2 K)", *r.tool_heat_transfer_coefficient);
   if (r.tool_conductivity) out += fmt::format(", conducting tool {:g} W/(m K)", *r.tool_conductivity);
-  if (r.tool_volumetric_heat_capacity) out += fmt::format(", rho c {:g} J/(m^3 K)", *r.tool_volumetric_heat_capacity);
+  if (r.tool_volumetric_heat_capacity)
+    out += fmt::format(", rho c {:g} J/(m^3 K)", *r.tool_volumetric_heat_capacity);
   if (r.tool_temperature) out += fmt::format(", tool at {:g} K", *r.tool_temperature);
-  if (r.friction_heat_share) out += fmt::format("; frictional heat share into the workpiece {:g}", *r.friction_heat_share);
+  if (r.friction_heat_share)
+    out += fmt::format("; frictional heat share into the workpiece {:g}", *r.friction_heat_share);
   return out;
 }
 
