@@ -16,8 +16,10 @@
 #include "app/validation_report.hpp"
 #include "app/path_option.hpp"
 #include "app/progress_option.hpp"
+#include "app/range_option.hpp"
 #include "cutting/cutting_scene.hpp"
 #include "cutting/input_plausibility.hpp"
+#include "cutting/tool_heat_settings.hpp"
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
 #include "io/scene_writer.hpp"
@@ -333,35 +335,35 @@ void add_validate_command(CLI::App& app) {
                 "The volumetric strain rate of every run (solver.volumetric_average; default off; nodal: averaged "
                 "through the nodes against volumetric locking of inclined shear bands, docs/solver.md)")
       ->check(CLI::IsMember(volumetric_average_names()));
-  // The tool's thermal options: bounded numbers that, when given, go into every case file.
+  // The tool's thermal options: when given, they go into every case file, with the bounds of their [cutting] keys.
   struct ThermalOption {
     const char* name;
     std::optional<double>* value;
     const char* help;
-    double lo, hi;
+    const ToolHeatKey& key;
   };
   for (const ThermalOption& t : {
            ThermalOption{"--friction-heat-share", &o->friction_heat_share,
                          "Share of the frictional heat that goes into the workpiece, the rest into the tool (default 1: "
                          "all of it; [cutting] friction_heat_share)",
-                         0.0, 1.0},
+                         kFrictionHeatShare},
            ThermalOption{"--tool-heat-transfer-coefficient", &o->tool_heat_transfer_coefficient,
                          "Heat transfer coefficient between the workpiece and the tool, W/(m^2 K) (default 0: an "
                          "adiabatic tool; [cutting] tool_heat_transfer_coefficient)",
-                         0.0, 1e9},
+                         kToolHeatTransferCoefficient},
            ThermalOption{"--tool-temperature", &o->tool_temperature,
                          "The tool's constant temperature, K, where it exchanges heat (default: the workpiece's "
                          "initial temperature)",
-                         1.0, 1e4},
+                         kToolTemperature},
            ThermalOption{"--tool-conductivity", &o->tool_conductivity,
                          "A conducting tool: its thermal conductivity, W/(m K) (default: none, the tool stays at its "
                          "temperature; needs --tool-heat-transfer-coefficient; [cutting] tool_conductivity)",
-                         0.0, 1e4},
+                         kToolConductivity},
            ThermalOption{"--tool-volumetric-heat-capacity", &o->tool_volumetric_heat_capacity,
                          "A conducting tool's rho c, J/(m^3 K) (default 0: a steady tool; [cutting] "
                          "tool_volumetric_heat_capacity)",
-                         0.0, 1e9}})
-    v->add_option(t.name, *t.value, t.help)->check(CLI::Range(t.lo, t.hi));
+                         kToolVolumetricHeatCapacity}})
+    v->add_option(t.name, *t.value, t.help)->check(within(t.key.range));
   v->callback([o]() { finish_command([&] { return run_study([&] { return run_validation(*o); }); }); });
 }
 

@@ -13,6 +13,7 @@
 
 #include "app/plot_command.hpp"
 #include "cutting/cutting_resolution.hpp"
+#include "cutting/tool_heat_settings.hpp"
 #include "io/input_error.hpp"
 #include "io/material_library.hpp"
 #include "io/whole_file.hpp"
@@ -147,6 +148,16 @@ ConditionRunSettings run_settings(const Options& o) {
   if (o.friction) {
     s.friction = *o.friction;
     s.friction_note = "chosen with --friction";
+  }
+  // The conditions between the tool's heat options, as the case reader puts them on its keys: refused here, before
+  // any run, rather than in every case file.
+  if (const auto conflict = tool_heat_conflict({o.friction_heat_share.value_or(1.0),
+                                                o.tool_heat_transfer_coefficient.value_or(0.0),
+                                                o.tool_conductivity.value_or(0.0),
+                                                o.tool_volumetric_heat_capacity.value_or(0.0)})) {
+    std::string option = "--" + std::string(conflict->key);
+    std::replace(option.begin(), option.end(), '_', '-');
+    throw InputError(fmt::format("{} {:g}: must be {}", option, conflict->value, conflict->allowed));
   }
   s.friction_heat_share = o.friction_heat_share;
   s.tool_heat_transfer_coefficient = o.tool_heat_transfer_coefficient;

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "cutting/tool_heat_settings.hpp"
 #include "solver/scene.hpp"
 
 namespace mpmcut {
@@ -42,8 +43,7 @@ CuttingParameters read_cutting_parameters(TableReader& t) {
   c.tool_length = t.number("tool_length", c.tool_length, Range::closed(0.0, 1.0, "m", "0 = automatic"));
   c.tool_height = t.number("tool_height", c.tool_height, Range::closed(0.0, 1.0, "m", "0 = automatic"));
   c.friction = t.number("friction", c.friction, Range::closed(0.0, 2.0, "", "Coulomb coefficient"));
-  c.friction_heat_share = t.number("friction_heat_share", c.friction_heat_share,
-                                   Range::closed(0.0, 1.0, "", "share of the frictional heat into the workpiece"));
+  c.friction_heat_share = t.number(kFrictionHeatShare.key, c.friction_heat_share, kFrictionHeatShare.range);
   // Also below the workpiece material's melting point: checked once the material is known.
   c.initial_temperature = t.number("initial_temperature", c.initial_temperature, Range::open(0.0, 1e4, "K"));
   c.cell_size = t.number("cell_size", c.cell_size);
@@ -59,30 +59,15 @@ CuttingParameters read_cutting_parameters(TableReader& t) {
       static_cast<int>(t.integer("particles_per_cell", c.particles_per_cell, Range::closed(1, 4, "per direction")));
   c.conduction = t.boolean("conduction", c.conduction);
   c.tool_heat_transfer_coefficient =
-      t.number("tool_heat_transfer_coefficient", c.tool_heat_transfer_coefficient,
-               Range::closed(0.0, 1e9, "W/(m^2 K)", "0 = adiabatic tool surface"));
-  if (c.tool_heat_transfer_coefficient > 0.0)
-    t.check("tool_heat_transfer_coefficient", c.conduction, "0 unless conduction = true",
-            c.tool_heat_transfer_coefficient);
+      t.number(kToolHeatTransferCoefficient.key, c.tool_heat_transfer_coefficient, kToolHeatTransferCoefficient.range);
   // The tool starts, and stays, at the workpiece's initial temperature unless told otherwise.
-  c.tool_temperature = t.number("tool_temperature", c.initial_temperature, Range::open(0.0, 1e4, "K"));
-  c.tool_conductivity = t.number("tool_conductivity", c.tool_conductivity,
-                                 Range::closed(0.0, 1e4, "W/(m K)", "0 = the tool stays at tool_temperature"));
+  c.tool_temperature = t.number(kToolTemperature.key, c.initial_temperature, kToolTemperature.range);
+  c.tool_conductivity = t.number(kToolConductivity.key, c.tool_conductivity, kToolConductivity.range);
   c.tool_volumetric_heat_capacity =
-      t.number("tool_volumetric_heat_capacity", c.tool_volumetric_heat_capacity,
-               Range::closed(0.0, 1e9, "J/(m^3 K)", "rho c of a conducting tool; 0 = a steady tool"));
-  if (c.tool_conductivity > 0.0) {
-    t.check("tool_conductivity", c.tool_heat_transfer_coefficient > 0.0,
-            "0 unless cutting.tool_heat_transfer_coefficient > 0 (the heat enters the tool through it)",
-            c.tool_conductivity);
-    t.check("tool_conductivity", c.friction_heat_share == 1.0,
-            "0 unless cutting.friction_heat_share = 1: a conducting tool takes its part of the frictional heat by "
-            "conduction from the workpiece's surface",
-            c.tool_conductivity);
-  } else {
-    t.check("tool_volumetric_heat_capacity", c.tool_volumetric_heat_capacity == 0.0,
-            "0 unless tool_conductivity > 0 (only a conducting tool stores heat)", c.tool_volumetric_heat_capacity);
-  }
+      t.number(kToolVolumetricHeatCapacity.key, c.tool_volumetric_heat_capacity, kToolVolumetricHeatCapacity.range);
+  if (const auto conflict = tool_heat_conflict({c.friction_heat_share, c.tool_heat_transfer_coefficient,
+                                                c.tool_conductivity, c.tool_volumetric_heat_capacity, c.conduction}))
+    t.check(conflict->key, false, conflict->allowed, conflict->value);
   c.chip_room = t.number("chip_room", c.chip_room, Range::closed(0.0, 1.0, "m", "0 = automatic"));
   c.snapshots = static_cast<int>(t.integer("snapshots", c.snapshots, Range::closed(1, 10000)));
   if (const toml::node* n = t.node("mass_scaling")) {

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <nlopt.h>
 
+#include "cutting/tool_heat_settings.hpp"
 #include "io/material_keys.hpp"
 #include "io/material_library.hpp"
 #include "io/scene_writer.hpp"
@@ -103,33 +104,24 @@ CalibrationConfig read_calibration_config(const fs::path& file, std::string_view
     };
     c.runs.contact_detection = solver_choice("contact_detection", contact_detection_names());
     c.runs.volumetric_average = solver_choice("volumetric_average", volumetric_average_names());
-    // The tool's heat, as validate's thermal options (none given: an adiabatic tool, the case text as before).
-    const auto thermal = [&](const char* key, double lo, double hi, const char* allowed) {
-      std::optional<double> value = r->optional_number(key);
-      if (value) r->check(key, std::isfinite(*value) && *value >= lo && *value <= hi, allowed, *value);
+    // The tool's heat, as validate's thermal options (none given: an adiabatic tool, the case text as before), with
+    // the bounds of their [cutting] keys and the conditions between them checked here, at the config's line, before
+    // any run.
+    const auto thermal = [&](const ToolHeatKey& key) {
+      std::optional<double> value = r->optional_number(key.key);
+      if (value) r->check(key.key, *value, key.range);
       return value;
     };
-    c.runs.friction_heat_share = thermal("friction_heat_share", 0.0, 1.0, "a share in [0, 1]");
-    c.runs.tool_heat_transfer_coefficient =
-        thermal("tool_heat_transfer_coefficient", 0.0, 1e9, "a coefficient in [0, 1e9] W/(m^2 K)");
-    c.runs.tool_temperature = thermal("tool_temperature", 1.0, 1e4, "a temperature in [1, 1e4] K");
-    c.runs.tool_conductivity = thermal("tool_conductivity", 0.0, 1e4, "a conductivity in [0, 1e4] W/(m K)");
-    c.runs.tool_volumetric_heat_capacity =
-        thermal("tool_volumetric_heat_capacity", 0.0, 1e9, "a heat capacity in [0, 1e9] J/(m^3 K)");
-    // The conditions the case reader puts on them, here, before any run (cutting/cutting_input.cpp).
-    if (c.runs.tool_conductivity.value_or(0.0) > 0.0) {
-      r->check("tool_conductivity", c.runs.tool_heat_transfer_coefficient.value_or(0.0) > 0.0,
-               "0 unless tool_heat_transfer_coefficient > 0 (the heat enters the tool through it)",
-               *c.runs.tool_conductivity);
-      r->check("tool_conductivity", c.runs.friction_heat_share.value_or(1.0) == 1.0,
-               "0 unless friction_heat_share = 1 (a conducting tool takes its part of the frictional heat by "
-               "conduction)",
-               *c.runs.tool_conductivity);
-    } else if (c.runs.tool_volumetric_heat_capacity) {
-      r->check("tool_volumetric_heat_capacity", *c.runs.tool_volumetric_heat_capacity == 0.0,
-               "0 unless tool_conductivity > 0 (only a conducting tool stores heat)",
-               *c.runs.tool_volumetric_heat_capacity);
-    }
+    c.runs.friction_heat_share = thermal(kFrictionHeatShare);
+    c.runs.tool_heat_transfer_coefficient = thermal(kToolHeatTransferCoefficient);
+    c.runs.tool_temperature = thermal(kToolTemperature);
+    c.runs.tool_conductivity = thermal(kToolConductivity);
+    c.runs.tool_volumetric_heat_capacity = thermal(kToolVolumetricHeatCapacity);
+    if (const auto conflict = tool_heat_conflict({c.runs.friction_heat_share.value_or(1.0),
+                                                  c.runs.tool_heat_transfer_coefficient.value_or(0.0),
+                                                  c.runs.tool_conductivity.value_or(0.0),
+                                                  c.runs.tool_volumetric_heat_capacity.value_or(0.0)}))
+      r->check(conflict->key, false, conflict->allowed, conflict->value);
     r->reject_unknown_keys();
   }
 

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <unistd.h>
 
+#include "../support/parse_errors.hpp"
 #include "io/input_error.hpp"
 #include "run/case_loading.hpp"
 #include "studies/calibration.hpp"
@@ -165,6 +166,39 @@ TEST(CalibrationConfig, ToolHeatReachesTheCaseFiles) {
   e = error_of(base + "[runs]\nfriction_heat_share = 1.5\n");
   EXPECT_NE(e.find("runs.friction_heat_share"), std::string::npos) << e;
   EXPECT_NE(e.find("[0, 1]"), std::string::npos) << e;
+}
+
+// calibrate's [runs] refuses the tool-heat values the case reader refuses, in the same words (one table of bounds
+// and conditions, cutting/tool_heat_settings.hpp): a calibration must not start runs whose case files all fail.
+TEST(CalibrationConfig, ToolHeatIsRefusedAsTheCaseReaderRefusesIt) {
+  const std::string case_text = condition_case_text(kCondition, read_calibration_config(write("plain.toml", kMinimal),
+                                                                                        kMeasurements).runs);
+  ASSERT_EQ(testing::parse_error_of(case_text), "");
+  // What follows "must be " up to ", got": the allowed values as the message states them.
+  const auto allowed = [](const std::string& e) {
+    const auto from = e.find("must be ");
+    const auto to = e.find(", got", from);
+    return from == std::string::npos || to == std::string::npos ? std::string() : e.substr(from, to - from);
+  };
+  const std::vector<std::vector<std::pair<std::string, std::string>>> bad = {
+      {{"tool_conductivity", "86"}},
+      {{"tool_heat_transfer_coefficient", "1e7"}, {"tool_conductivity", "86"}, {"friction_heat_share", "0.5"}},
+      {{"tool_volumetric_heat_capacity", "3e6"}},
+      {{"tool_temperature", "0"}},
+      {{"friction_heat_share", "1.5"}},
+      {{"tool_heat_transfer_coefficient", "-1"}}};
+  for (const auto& values : bad) {
+    std::string runs = "[runs]\n";
+    std::vector<std::string> overrides;
+    for (const auto& [key, value] : values) {
+      runs += key + " = " + value + "\n";
+      overrides.push_back("cutting." + key + "=" + value);
+    }
+    const std::string by_calibrate = error_of(kMinimal + runs);
+    const std::string by_case_reader = testing::parse_error_of(case_text, overrides);
+    EXPECT_NE(allowed(by_calibrate), "") << runs << by_calibrate;
+    EXPECT_EQ(allowed(by_calibrate), allowed(by_case_reader)) << runs << by_calibrate << "\n" << by_case_reader;
+  }
 }
 
 // [fixed] material keys run in every case beside the free ones and are written into best_material.toml's set; an

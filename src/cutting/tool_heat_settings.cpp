@@ -1,0 +1,34 @@
+#include "cutting/tool_heat_settings.hpp"
+
+#include <array>
+
+namespace mpmcut {
+
+std::span<const ToolHeatKey> tool_heat_keys() {
+  static constexpr std::array<ToolHeatKey, 5> keys{kFrictionHeatShare, kToolHeatTransferCoefficient, kToolTemperature,
+                                                   kToolConductivity, kToolVolumetricHeatCapacity};
+  return keys;
+}
+
+std::optional<ToolHeatConflict> tool_heat_conflict(const ToolHeatChoice& c) {
+  if (c.tool_heat_transfer_coefficient > 0.0 && !c.conduction)
+    return ToolHeatConflict{kToolHeatTransferCoefficient.key, c.tool_heat_transfer_coefficient,
+                            "0 unless conduction = true"};
+  if (c.tool_conductivity > 0.0) {
+    if (!(c.tool_heat_transfer_coefficient > 0.0))
+      return ToolHeatConflict{kToolConductivity.key, c.tool_conductivity,
+                              "0 unless tool_heat_transfer_coefficient > 0 (the heat enters the tool through it)"};
+    // A conducting tool takes its part of the frictional heat by conduction from the workpiece's surface: a share
+    // given to it as well would count it twice.
+    if (c.friction_heat_share != 1.0)
+      return ToolHeatConflict{kToolConductivity.key, c.tool_conductivity,
+                              "0 unless friction_heat_share = 1 (a conducting tool takes its part of the frictional "
+                              "heat by conduction from the workpiece's surface)"};
+  } else if (c.tool_volumetric_heat_capacity != 0.0) {
+    return ToolHeatConflict{kToolVolumetricHeatCapacity.key, c.tool_volumetric_heat_capacity,
+                            "0 unless tool_conductivity > 0 (only a conducting tool stores heat)"};
+  }
+  return std::nullopt;
+}
+
+}  // namespace mpmcut
