@@ -37,7 +37,7 @@ inline constexpr unsigned kVtuOptional = 1u << 3;  // snapshots from before the 
   X(Mat2, velocity_gradient, "per_s", Mat2::Zero(), kCheckpoint | kVtu | kVtuRead,                                  \
     "velocity gradient L = grad v of the last step, L_ij = dv_i/dx_j")                                                \
   X(Mat2, deformation_gradient, "", Mat2::Identity(), kCheckpoint,                                                    \
-    "deformation gradient F, in-plane (F_zz = 1); snapshots hold J = det F")                                          \
+    "deformation gradient F, in-plane (F_zz = 1); snapshots hold J = V/V0 = det F")                                   \
   /* Mass and volume */                                                                                               \
   X(double, mass, "kg_per_m", 0.0, kCheckpoint | kVtu | kVtuRead, "mass per m of thickness")                          \
   X(double, volume, "m3_per_m", 0.0, kCheckpoint | kVtu | kVtuRead, "current volume per m of thickness (an area)")    \

@@ -26,6 +26,12 @@ void Particles::resize(std::size_t n) {
   for_each_particle_field([&](const auto& f) { (this->*f.array).resize(n, initial.*f.value); });
 }
 
+void advance_deformation(Particles& P, std::size_t i, const Mat2& L, double dt) {
+  const Mat2 increment = Mat2::Identity() + dt * L;
+  P.deformation_gradient[i] = increment * P.deformation_gradient[i];
+  P.volume[i] *= increment.determinant();
+}
+
 namespace {
 template <class T>
 void apply_order(std::vector<T>& a, const std::vector<std::size_t>& order) {

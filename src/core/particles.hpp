@@ -97,6 +97,13 @@ void for_each_particle_field(Fn&& fn) {
 #undef MPMCUT_VISIT_FIELD
 }
 
+// One step of the particle's motion, velocity gradient L over dt: F <- (I + dt L) F, and the volume V <- det(I + dt L) V
+// from the step's own volume change rather than det F V0. Where the flow keeps stretching a particle (a failed one
+// drawn along the tool's edge), F's entries grow to ~1e7 and det F, a difference of two products of that size, loses
+// every digit: J came out in steps of 0.25, then 0, with density and pressure infinite. det(I + dt L) is near 1 and
+// exact to rounding; the two agree in exact arithmetic (det of a product).
+void advance_deformation(Particles& particles, std::size_t i, const Mat2& L, double dt);
+
 // The fields as a list (docs, tests, messages).
 const std::vector<ParticleFieldInfo>& particle_field_infos();
 

@@ -192,7 +192,7 @@ VtuSnapshot read_particles_vtu(const std::filesystem::path& file) {
   for_each_particle_field([&](const auto& f) {
     if (f.info.has(kVtuRead)) read_field(r, f, p);
   });
-  // Not in the file but rebuilt from det F: F = sqrt(J) I, V0 = V / J.
+  // Not in the file but rebuilt from J = V/V0 (= det F): F = sqrt(J) I, V0 = V / J.
   const std::vector<double> jacobian = r.array<double>("deformation_jacobian_J", "Float64", 1, n);
   for (std::size_t i = 0; i < n; ++i) {
     const double J = jacobian[i];

@@ -16,8 +16,7 @@ MaterialPointDriver::MaterialPointDriver(const Material& material, double temper
 }
 
 ConstitutiveIncrement MaterialPointDriver::advance(Particles& p, const Mat2& L, double dt) const {
-  p.deformation_gradient[0] = (Mat2::Identity() + L * dt) * p.deformation_gradient[0];
-  p.volume[0] = p.deformation_gradient[0].determinant() * p.initial_volume[0];
+  advance_deformation(p, 0, L, dt);
   p.velocity_gradient[0] = L;
   return material_.update(p, 0, L, StepContext{dt, cell_size_});
 }

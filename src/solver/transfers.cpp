@@ -92,8 +92,7 @@ Mat2 velocity_gradient(const Particles& P, const Grid& G, std::span<const ShapeF
 }
 
 void advance_deformation_gradient(Particles& P, double dt, std::size_t p) {
-  P.deformation_gradient[p] = (Mat2::Identity() + dt * P.velocity_gradient[p]) * P.deformation_gradient[p];
-  P.volume[p] = P.deformation_gradient[p].determinant() * P.initial_volume[p];
+  advance_deformation(P, p, P.velocity_gradient[p], dt);
 }
 
 }  // namespace

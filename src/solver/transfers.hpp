@@ -44,7 +44,7 @@ void remap_momentum_musl(const Particles& particles, std::span<const ShapeFuncti
                          const StripColouring& colouring, bool parallel, Grid& grid);
 
 // Velocity gradient L = sum v_I grad S_I^T from grid.velocity_new, and with it the deformation
-// gradient F <- (I + dt L) F and the volume det F V0 of every particle.
+// gradient F <- (I + dt L) F and the volume V <- det(I + dt L) V of every particle (core/particles.hpp).
 void update_velocity_gradients(Particles& particles, const Grid& grid, std::span<const ShapeFunction> body_shapes,
                                double dt, bool parallel);
 

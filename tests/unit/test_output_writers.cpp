@@ -64,6 +64,7 @@ Particles sample_particles(int n) {
     p.plastic_strain[i] = 0.1 * i;
     p.damage[i] = 0.01 * i;
     p.deformation_gradient[i] << 1.0 + 0.1 * i, 0.0, 0.0, 1.0;
+    p.initial_volume[i] = 0.25 / (1.0 + 0.1 * i);  // V = det F V0, as a run keeps them
     p.velocity_gradient[i] << 1.0, 2.0, 3.0, 4.0 + i;
   }
   return p;
