@@ -267,8 +267,14 @@ void add_validate_command(CLI::App& app) {
               "unless a selection is given: checks the pipeline, numbers not converged");
   v->add_option("--cells-per-feed", o->cells_per_feed,
                 "N: cell <= t0/N, cells across the uncut chip thickness (default 10; cost grows as N^3); chip-type "
-                "conditions use at least 8")
+                "conditions use at least --chip-cells-per-feed")
       ->check(CLI::Range(2, 100));
+  v->add_option("--chip-cells-per-feed", o->chip_cells_per_feed,
+                fmt::format("Cells across t0 of the chip-type conditions (default {}: at t0/10 the 75 m/s chip's type "
+                            "was not decided, at t0/20 it was the observed one, docs/results.md; at least 8, the chip "
+                            "analysis' resolved count, and at least --cells-per-feed)",
+                            kChipTypeCellsPerFeed))
+      ->check(CLI::Range(8, 100));
   v->add_option("--cells-per-edge-radius", o->cells_per_edge_radius,
                 "M: cell <= r_n/M, cells across the measured edge radius of the force conditions (default 4: the "
                 "edge's quarter arc then spans ~6 cells; 0 = no limit). cell = min(t0/N, r_n/M)")

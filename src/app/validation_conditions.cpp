@@ -127,6 +127,7 @@ ConditionRunSettings run_settings(const Options& o) {
   ConditionRunSettings s;
   s.quick = o.quick;
   s.cells_per_feed = o.cells_per_feed;
+  s.chip_type_cells_per_feed = o.chip_cells_per_feed;
   s.cells_per_edge_radius = o.cells_per_edge_radius;
   s.cells_per_thermal_length = o.cells_per_thermal_length;
   choose_material(o, s);
@@ -258,6 +259,14 @@ void select_conditions(std::vector<Condition>& all, const Options& o) {
     throw InputError("the selection (--h, --speeds-m-per-min, --conditions together) matches no condition of the matrix");
 }
 
+// The resolution part of the run settings (run_settings also reads the material, which the text does not need).
+static ConditionRunSettings run_settings_resolution(const Options& o) {
+  ConditionRunSettings s;
+  s.cells_per_feed = o.cells_per_feed;
+  s.chip_type_cells_per_feed = o.chip_cells_per_feed;
+  return s;
+}
+
 std::string resolution_text(const Options& o) {
   if (o.quick) return "--quick: cell = t0/4, 1 particle per cell, 4 cells of tool travel (a pipeline check)";
   const std::string thermal =
@@ -276,10 +285,10 @@ std::string resolution_text(const Options& o) {
       "tool tip\")",
       o.cells_per_feed, o.cells_per_edge_radius, thermal,
       o.measurements.empty() || !o.chip_observations.empty()  // with a user's force file alone there are none
-          ? fmt::format("; chip-type conditions at t0/{} (the least the chip analysis needs to resolve segments; an "
-                        "edge radius the observations give is resolved as a force condition's, the preset's {:g} µm "
-                        "where they give none sets no limit)",
-                        chip_cells_per_feed(o.cells_per_feed), kChipConditionEdgeRadius_um)
+          ? fmt::format("; chip-type conditions at t0/{} (--chip-cells-per-feed: at t0/10 the 75 m/s chip's type was "
+                        "not decided, at t0/20 it was the observed one; an edge radius the observations give is "
+                        "resolved as a force condition's, the preset's {:g} µm where they give none sets no limit)",
+                        chip_cells_per_feed(run_settings_resolution(o)), kChipConditionEdgeRadius_um)
           : std::string());
 }
 

@@ -20,6 +20,7 @@ namespace mpmcut::validation {
 struct Options {
   bool quick = false;
   int cells_per_feed = 10;            // N: cell <= t0 / N (the cutting preset's t0/10)
+  int chip_cells_per_feed = kChipTypeCellsPerFeed;  // cells across t0 of the chip-type conditions (at least N)
   double cells_per_edge_radius = 4.0; // M: cell <= r_n / M
   double cells_per_thermal_length = 0.0;  // K: cell <= sqrt(kappa t0 / V) / K; 0 = no such limit
   std::string out_dir;

@@ -242,8 +242,9 @@ CuttingCondition force_condition(const MeasuredForces& m) {
   return c;
 }
 
-int chip_cells_per_feed(int cells_per_feed) {
-  return std::max(cells_per_feed, static_cast<int>(std::ceil(ChipThresholds{}.resolved_cells_per_feed)));
+int chip_cells_per_feed(const ConditionRunSettings& o) {
+  const int chip = o.chip_type_cells_per_feed > 0 ? o.chip_type_cells_per_feed : kChipTypeCellsPerFeed;
+  return std::max({o.cells_per_feed, chip, static_cast<int>(std::ceil(ChipThresholds{}.resolved_cells_per_feed))});
 }
 
 double validation_cell_size_m(double t0, double edge_radius, int cells_per_feed, double cells_per_edge_radius,
@@ -301,7 +302,7 @@ double validation_workpiece_height_m(double t0, double edge_radius) {
 std::string condition_case_text(const CuttingCondition& c, const ConditionRunSettings& o) {
   const double h = c.h_mm * 1e-3;
   const double r_n = c.edge_radius_um * 1e-6;
-  const int cells_per_feed = c.kind == "chip" ? chip_cells_per_feed(o.cells_per_feed) : o.cells_per_feed;
+  const int cells_per_feed = c.kind == "chip" ? chip_cells_per_feed(o) : o.cells_per_feed;
   // The edge-radius limit is for measured edges: the force conditions' and a chip-type condition's whose source gives
   // one; the others have the preset's 5 um edge, which at r_n/M would be a 1 um cell at 75 m/s.
   const bool measured_edge = c.kind == "forces" || c.edge_radius_given;

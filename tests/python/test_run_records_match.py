@@ -25,14 +25,18 @@ ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 
 # (records directory, the validate options it was run with: its README's command, the model version of its
 # scenes today: a record of an older one is listed "outdated-record"). The node-detection matrices name their
-# contact since the preset's became penalty (2026-12-07).
+# contact since the preset's became penalty (2026-12-07), and their chip-type conditions' t0/10 since the default
+# became t0/20 (the same day).
+OLD_CHIP_CELLS = ["--chip-cells-per-feed", "10"]
+SPEED_ENDS = ["--material-file", "docs/results/calibration_speed_ends/best_material.toml"]
 MATRICES = [
-    ("docs/results/validation_matrix/records", ["--contact-detection", "node"], 0),
-    ("docs/results/validation_speed_ends/records",
-     ["--material-file", "docs/results/calibration_speed_ends/best_material.toml", "--contact-detection", "node"], 0),
+    ("docs/results/validation_matrix/records", ["--contact-detection", "node"] + OLD_CHIP_CELLS, 0),
+    ("docs/results/validation_speed_ends/records", SPEED_ENDS + ["--contact-detection", "node"] + OLD_CHIP_CELLS, 0),
     ("docs/results/validation_speed_ends_penalty/records",
-     ["--material-file", "docs/results/calibration_speed_ends/best_material.toml", "--contact-detection", "penalty"],
-     1),
+     SPEED_ENDS + ["--contact-detection", "penalty"] + OLD_CHIP_CELLS, 1),
+    ("docs/results/validation_crack_friction/records",
+     SPEED_ENDS + ["--contact-detection", "penalty", "--material-key", "crack_friction=0.5", "--tool-conductivity", "86",
+                   "--tool-heat-transfer-coefficient", "1e7"] + OLD_CHIP_CELLS, 1),
 ]
 
 

@@ -27,7 +27,8 @@ TEST(ValidationResolution, CutAndWorkpieceScaleWithTheLargerOfFeedAndEdgeRadius)
 }
 
 // The case file carries the rule: the thin feed with a large edge gets t0/N, the thick one r_n/M, the chip-type
-// condition (preset 5 um edge, not measured) no edge limit; and the case reads back with those cells.
+// condition (preset 5 um edge, not measured) no edge limit but its own cells across t0 (kChipTypeCellsPerFeed, or
+// the settings', never fewer than the force conditions'); and the case reads back with those cells.
 TEST(ValidationResolution, CaseFileCellSizeFollowsTheRule) {
   ConditionRunSettings s;
   s.cells_per_feed = 10;
@@ -43,7 +44,11 @@ TEST(ValidationResolution, CaseFileCellSizeFollowsTheRule) {
   };
   EXPECT_NEAR(cell_of("forces", 0.01, 39.8), 1e-6, 1e-12);
   EXPECT_NEAR(cell_of("forces", 0.2, 38.8), 9.7e-6, 1e-12);
+  EXPECT_NEAR(cell_of("chip", 0.1, 5.0), 5e-6, 1e-12);  // kChipTypeCellsPerFeed = 20
+  s.chip_type_cells_per_feed = 10;                        // the matrices before 2026-12-07
   EXPECT_NEAR(cell_of("chip", 0.1, 5.0), 10e-6, 1e-12);
+  s.cells_per_feed = 24;  // never coarser than the force conditions
+  EXPECT_NEAR(cell_of("chip", 0.1, 5.0), 0.1e-3 / 24, 1e-12);
 }
 
 // l_th = sqrt(kappa t0 / V) with kappa = k / (rho c) of the workpiece set; cell <= l_th / K where that is the smallest.
