@@ -92,6 +92,21 @@ TEST(MaterialLibrary, KlippelCalibratedSetIsTheCuttingSetWithTheFittedAAndM) {
   EXPECT_NE(builtin_material_library().find("ti64-klippel-2speed")->citation.find("Klippel"), std::string::npos);
 }
 
+// The set identified with crack friction and a conducting tool (docs/results/calibration_crack_friction): ti64-cutting
+// with the fitted B, the fixed speed-ends n and m and crack friction, nothing else changed; the values of the
+// calibration's best_material.toml to six digits.
+TEST(MaterialLibrary, CrackFrictionCalibratedSetIsTheCuttingSetWithItsFittedAndFixedKeys) {
+  expect_derived_set("ti64-klippel-crack-friction", "ti64-cutting", [](MaterialParameters& m) {
+    m.jc_B = 442.495e6;
+    m.jc_n = 0.273163;
+    m.jc_m = 1.027186;
+    m.crack_friction = 0.5;
+  });
+  const std::string citation = builtin_material_library().find("ti64-klippel-crack-friction")->citation;
+  EXPECT_NE(citation.find("Klippel"), std::string::npos);
+  EXPECT_NE(citation.find("friction = 0.356"), std::string::npos);
+}
+
 // Sima & Oezel 2010 model 3: the Lee & Lin set b with the TANH softening switched on, nothing else changed.
 TEST(MaterialLibrary, SimaOzelSetIsLeeLinBWithTheTanhSoftening) {
   expect_derived_set("ti64-sima-ozel-2010", "ti64-lee-lin-1998-sima",
