@@ -21,8 +21,9 @@ void check_guards(const Particles& P, const Grid& grid, const Scene& scene, cons
                         std::isfinite(P.volume[p]);
     const Vec2 x = P.position[p];
     const bool inside = x.x() >= lo.x() && x.x() <= hi.x() && x.y() >= lo.y() && x.y() <= hi.y();
-    // T <= 0 K is finite but no physics makes it: a broken heat update, not a result to write.
-    const bool above_zero = P.temperature[p] > 0.0;
+    // T <= 0 K is finite but no physics makes it: a broken heat update, not a result to write. Nor is V <= 0: a
+    // particle turned inside out within a step.
+    const bool above_zero = P.temperature[p] > 0.0 && P.volume[p] > 0.0;
     if (!finite || !inside || !above_zero) bad = std::max(bad, static_cast<long>(p));
   }
   const auto where = [&](std::size_t p) {
@@ -32,6 +33,14 @@ void check_guards(const Particles& P, const Grid& grid, const Scene& scene, cons
   if (bad >= 0) {
     // Report the first offending particle, deterministically.
     for (std::size_t p = 0; p < n; ++p) {
+      // First, as it is the cause of what follows (density and pressure infinite or negative): a volume at or below
+      // zero (a NaN one is reported below, with the other non-finite fields).
+      if (P.volume[p] <= 0.0)
+        throw SimulationError(fmt::format(
+            "particle volume {:.6g} m^3/m (J = V/V0 = {:.6g}), not positive, at {}: the velocity gradient turned it "
+            "inside out within a step (an unstable step: a smaller solver.cfl, or finer cells where the flow is this "
+            "fast)",
+            P.volume[p], P.volume[p] / P.initial_volume[p], where(p)));
       const PlaneStrainTensor& s = P.stress[p];
       const char* field = nullptr;
       if (!std::isfinite(P.position[p].x()) || !std::isfinite(P.position[p].y())) field = "position";

@@ -300,3 +300,21 @@ TEST(Guards, TemperatureAtOrBelowAbsoluteZeroIsReported) {
     EXPECT_NE(msg.find("-10 K"), std::string::npos) << msg;
   }
 }
+
+// A particle whose volume is at or below zero (turned inside out within a step) is reported as that, the cause, not as
+// the non-finite stress it makes (in a 5 um cut a collapsed volume first read "non-finite stress", docs/solver.md).
+TEST(Guards, VolumeAtOrBelowZeroIsReportedAsTheCause) {
+  for (const double volume : {0.0, -1e-4}) {
+    Simulation sim(resting_block_scene());
+    sim.particles().volume[5] = volume;
+    try {
+      sim.step();
+      FAIL() << "expected SimulationError";
+    } catch (const SimulationError& e) {
+      const std::string msg = e.what();
+      EXPECT_NE(msg.find("particle volume"), std::string::npos) << msg;
+      EXPECT_NE(msg.find("not positive"), std::string::npos) << msg;
+      EXPECT_NE(msg.find("particle 5 "), std::string::npos) << msg;
+    }
+  }
+}
