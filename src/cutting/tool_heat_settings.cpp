@@ -1,14 +1,6 @@
 #include "cutting/tool_heat_settings.hpp"
 
-#include <array>
-
 namespace mpmcut {
-
-std::span<const ToolHeatKey> tool_heat_keys() {
-  static constexpr std::array<ToolHeatKey, 5> keys{kFrictionHeatShare, kToolHeatTransferCoefficient, kToolTemperature,
-                                                   kToolConductivity, kToolVolumetricHeatCapacity};
-  return keys;
-}
 
 std::optional<ToolHeatConflict> tool_heat_conflict(const ToolHeatChoice& c) {
   if (c.tool_heat_transfer_coefficient > 0.0 && !c.conduction)

@@ -3,7 +3,6 @@
 // (cutting_input.cpp), `validate`'s options and `calibrate`'s [runs] check against these, so that all three allow the
 // same values and a study refuses a bad combination before any run, with the message the case reader would give.
 #include <optional>
-#include <span>
 #include <string>
 #include <string_view>
 
@@ -25,9 +24,6 @@ inline constexpr ToolHeatKey kToolConductivity{"tool_conductivity",
                                                Range::closed(0.0, 1e4, "W/(m K)", "0 = the tool stays at tool_temperature")};
 inline constexpr ToolHeatKey kToolVolumetricHeatCapacity{
     "tool_volumetric_heat_capacity", Range::closed(0.0, 1e9, "J/(m^3 K)", "rho c of a conducting tool; 0 = a steady tool")};
-
-// All of them, in the order of docs/input.md.
-std::span<const ToolHeatKey> tool_heat_keys();
 
 // The values that the conditions between the keys look at (unset keys at their defaults).
 struct ToolHeatChoice {
