@@ -243,8 +243,8 @@ CuttingCondition force_condition(const MeasuredForces& m) {
 }
 
 int chip_cells_per_feed(const ConditionRunSettings& o) {
-  const int chip = o.chip_type_cells_per_feed > 0 ? o.chip_type_cells_per_feed : kChipTypeCellsPerFeed;
-  return std::max({o.cells_per_feed, chip, static_cast<int>(std::ceil(ChipThresholds{}.resolved_cells_per_feed))});
+  return std::max({o.cells_per_feed, o.chip_type_cells_per_feed,
+                   static_cast<int>(std::ceil(ChipThresholds{}.resolved_cells_per_feed))});
 }
 
 double validation_cell_size_m(double t0, double edge_radius, int cells_per_feed, double cells_per_edge_radius,

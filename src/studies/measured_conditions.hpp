@@ -93,12 +93,17 @@ std::string force_condition_id(const MeasuredForces& m);
 // The simulated condition of a row of measured forces.
 CuttingCondition force_condition(const MeasuredForces& m);
 
+// Cells across t0 of chip-type conditions by default. At t0/10 the 75 m/s chip (discontinuous, observed) came out
+// continuous or serrated, at t0/20 discontinuous in 6 of 6 steady samples, with and without crack friction
+// (docs/results/validation_crack_friction, "The 75 m/s chip at t0/20"): the chip type of a fast cut needs its cells.
+inline constexpr int kChipTypeCellsPerFeed = 20;
+
 // How the conditions are run: resolution, material and friction.
 struct ConditionRunSettings {
   std::string purpose = "validation";  // the case title's first word
   bool quick = false;       // cell = t0/4, 1 particle per cell, 4 cells of travel: a pipeline check
   int cells_per_feed = 10;  // N: cell <= t0 / N (chip-type conditions: at least chip_cells_per_feed)
-  int chip_type_cells_per_feed = 0;  // cells across t0 of chip-type conditions; 0: kChipTypeCellsPerFeed
+  int chip_type_cells_per_feed = kChipTypeCellsPerFeed;  // cells across t0 of chip-type conditions (at least N)
   // M: cell <= r_n / M, so that the rounded edge, which at thin feeds does most of the cutting, is
   // resolved; 0 = no edge-radius limit (cell = t0 / N). Force conditions only (their r_n is measured).
   double cells_per_edge_radius = 4.0;
@@ -134,13 +139,8 @@ struct ConditionRunSettings {
 // The edge radius of a chip-type condition whose source gives none: the cutting preset's default, um.
 inline constexpr double kChipConditionEdgeRadius_um = 5.0;
 
-// Cells across t0 of chip-type conditions by default. At t0/10 the 75 m/s chip (discontinuous, observed) came out
-// continuous or serrated, at t0/20 discontinuous in 6 of 6 steady samples, with and without crack friction
-// (docs/results/validation_crack_friction, "The 75 m/s chip at t0/20"): the chip type of a fast cut needs its cells.
-inline constexpr int kChipTypeCellsPerFeed = 20;
-
-// Cells across t0 of chip-type conditions: the settings' chip-type count (0: kChipTypeCellsPerFeed), at least the
-// force conditions' and the chip analysis' resolved count (below it segments are particle roughness: at t0/5 the 5
+// Cells across t0 of chip-type conditions: the settings' chip-type count, at least the force conditions' and the chip
+// analysis' resolved count (below it segments are particle roughness: at t0/5 the 5
 // and 75 m/s chip types came out swapped).
 int chip_cells_per_feed(const ConditionRunSettings& o);
 
