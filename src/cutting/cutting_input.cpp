@@ -66,7 +66,8 @@ CuttingParameters read_cutting_parameters(TableReader& t) {
   c.tool_volumetric_heat_capacity =
       t.number(kToolVolumetricHeatCapacity.key, c.tool_volumetric_heat_capacity, kToolVolumetricHeatCapacity.range);
   if (const auto conflict = tool_heat_conflict({c.friction_heat_share, c.tool_heat_transfer_coefficient,
-                                                c.tool_conductivity, c.tool_volumetric_heat_capacity, c.conduction}))
+                                                c.tool_conductivity, c.tool_volumetric_heat_capacity, c.conduction},
+                                               "cutting."))
     t.check(conflict->key, false, conflict->allowed, conflict->value);
   c.chip_room = t.number("chip_room", c.chip_room, Range::closed(0.0, 1.0, "m", "0 = automatic"));
   c.snapshots = static_cast<int>(t.integer("snapshots", c.snapshots, Range::closed(1, 10000)));

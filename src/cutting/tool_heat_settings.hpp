@@ -34,12 +34,13 @@ struct ToolHeatChoice {
   bool conduction = true;  // heat conduction in the workpiece ([cutting] conduction)
 };
 
-// The first condition between the keys that `c` breaks: the key to blame, its value and what it allows.
+// The first condition between the keys that `c` breaks: the key to blame, its value and what it allows, naming the
+// other keys after `prefix` ("cutting." in a case file, "runs." in a calibration's configuration).
 struct ToolHeatConflict {
   std::string_view key;
   double value = 0.0;
   std::string allowed;
 };
-std::optional<ToolHeatConflict> tool_heat_conflict(const ToolHeatChoice& c);
+std::optional<ToolHeatConflict> tool_heat_conflict(const ToolHeatChoice& c, std::string_view prefix = "");
 
 }  // namespace mpmcut

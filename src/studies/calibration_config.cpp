@@ -120,7 +120,8 @@ CalibrationConfig read_calibration_config(const fs::path& file, std::string_view
     if (const auto conflict = tool_heat_conflict({c.runs.friction_heat_share.value_or(1.0),
                                                   c.runs.tool_heat_transfer_coefficient.value_or(0.0),
                                                   c.runs.tool_conductivity.value_or(0.0),
-                                                  c.runs.tool_volumetric_heat_capacity.value_or(0.0)}))
+                                                  c.runs.tool_volumetric_heat_capacity.value_or(0.0)},
+                                                 "runs."))
       r->check(conflict->key, false, conflict->allowed, conflict->value);
     r->reject_unknown_keys();
   }
