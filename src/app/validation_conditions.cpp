@@ -114,6 +114,14 @@ std::string join(const std::vector<std::string>& parts, const std::string& sep) 
   return out;
 }
 
+// The resolution part of the run settings (resolution_text needs no more; run_settings starts from it).
+static ConditionRunSettings run_settings_resolution(const Options& o) {
+  ConditionRunSettings s;
+  s.cells_per_feed = o.cells_per_feed;
+  s.chip_type_cells_per_feed = o.chip_cells_per_feed;
+  return s;
+}
+
 ConditionRunSettings run_settings(const Options& o) {
   // CLI11's range checks let NaN through (every comparison with it is false).
   for (const auto& [option, value] :
@@ -124,10 +132,8 @@ ConditionRunSettings run_settings(const Options& o) {
         {"--tool-temperature", o.tool_temperature}, {"--tool-conductivity", o.tool_conductivity},
         {"--tool-volumetric-heat-capacity", o.tool_volumetric_heat_capacity}})
     if (value && !std::isfinite(*value)) throw InputError(fmt::format("{} {}: a finite number is needed", option, *value));
-  ConditionRunSettings s;
+  ConditionRunSettings s = run_settings_resolution(o);
   s.quick = o.quick;
-  s.cells_per_feed = o.cells_per_feed;
-  s.chip_type_cells_per_feed = o.chip_cells_per_feed;
   s.cells_per_edge_radius = o.cells_per_edge_radius;
   s.cells_per_thermal_length = o.cells_per_thermal_length;
   choose_material(o, s);
@@ -257,14 +263,6 @@ void select_conditions(std::vector<Condition>& all, const Options& o) {
   }
   if (std::none_of(all.begin(), all.end(), [](const Condition& c) { return c.selected; }))
     throw InputError("the selection (--h, --speeds-m-per-min, --conditions together) matches no condition of the matrix");
-}
-
-// The resolution part of the run settings (run_settings also reads the material, which the text does not need).
-static ConditionRunSettings run_settings_resolution(const Options& o) {
-  ConditionRunSettings s;
-  s.cells_per_feed = o.cells_per_feed;
-  s.chip_type_cells_per_feed = o.chip_cells_per_feed;
-  return s;
 }
 
 std::string resolution_text(const Options& o) {
