@@ -52,6 +52,9 @@ class RigidBodyHeat {
   std::vector<double> averaging_time_;   // s, of a steady body's heat input
   std::vector<std::vector<Link>> links_;
   std::vector<double> heat_;  // scratch: J/m per cell
+  std::vector<double> conductance_, unit_, rise_;  // scratch of stable_average_weight, per cell
+  // The largest weight of one update in steady body r's input average that cannot overshoot (from its links).
+  double stable_average_weight(std::size_t r);
 };
 
 }  // namespace mpmcut

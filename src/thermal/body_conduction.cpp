@@ -92,7 +92,7 @@ struct BodyConduction::SteadySolver {
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
 };
 
-void BodyConduction::steady_field(const std::vector<double>& heat_rate, std::vector<double>& field) const {
+void BodyConduction::solve_steady(const std::vector<double>& heat_rate, double held, std::vector<double>& field) const {
   const int offsets[4] = {-1, 1, -nx_, nx_};
   auto neighbour = [&](int c, int f) {  // -1 beyond the box or outside the body
     const int i = c % nx_;
@@ -131,14 +131,23 @@ void BodyConduction::steady_field(const std::vector<double>& heat_rate, std::vec
     double b = heat_rate[c];
     for (int f = 0; f < 4; ++f) {
       const int nb = neighbour(c, f);
-      if (nb >= 0 && kinds_[nb] == BodyCell::Held) b += conductivity_ * held_temperature_;
+      if (nb >= 0 && kinds_[nb] == BodyCell::Held) b += conductivity_ * held;
     }
     rhs(static_cast<Eigen::Index>(m)) = b;
   }
   const Eigen::VectorXd T = steady_->ldlt.solve(rhs);
   for (std::size_t m = 0; m < conducting_.size(); ++m) field[conducting_[m]] = T(static_cast<Eigen::Index>(m));
   for (int c = 0; c < cell_count(); ++c)
-    if (kinds_[c] == BodyCell::Held) field[c] = held_temperature_;
+    if (kinds_[c] == BodyCell::Held) field[c] = held;
+}
+
+void BodyConduction::steady_field(const std::vector<double>& heat_rate, std::vector<double>& field) const {
+  solve_steady(heat_rate, held_temperature_, field);
+}
+
+void BodyConduction::steady_rise(const std::vector<double>& heat_rate, std::vector<double>& rise) const {
+  rise.assign(kinds_.size(), 0.0);  // outside cells stay 0
+  solve_steady(heat_rate, 0.0, rise);
 }
 
 }  // namespace mpmcut

@@ -51,6 +51,9 @@ class BodyConduction {
   // The matrix is factorised on the first call. Throws std::invalid_argument where conducting cells have no path
   // to a held cell (their steady temperature would be unbounded).
   void steady_field(const std::vector<double>& heat_rate, std::vector<double>& field) const;
+  // The steady rise above the held temperature under heat_rate[cell], W/m (the linear part of steady_field): its
+  // response to a heat input, K per W/m.
+  void steady_rise(const std::vector<double>& heat_rate, std::vector<double>& rise) const;
 
  private:
   Vec2 origin_ = Vec2::Zero();
@@ -61,6 +64,8 @@ class BodyConduction {
   std::vector<int> conducting_;  // the conducting cells' indices
   struct SteadySolver;           // the factorised steady matrix (Eigen), built on first use
   mutable std::shared_ptr<SteadySolver> steady_;
+  // The steady field with the held cells at `held`.
+  void solve_steady(const std::vector<double>& heat_rate, double held, std::vector<double>& field) const;
 };
 
 }  // namespace mpmcut

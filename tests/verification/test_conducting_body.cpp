@@ -10,6 +10,7 @@
 //    a transient plate alike.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -134,7 +135,7 @@ constexpr double kSlabK = 1.0, kPlateK = 2.0, kHc = 25.0;
 
 // The slab (k = rho = c = 1) from y = 0.1 to 0.3 held at kTop on top (the grid's top row), on a plate from y = 0
 // to 0.1 of the same width, conducting (kPlateK) and held at kBottom on its lower face (edge 0), h_c = kHc between.
-Scene slab_on_conducting_plate(double h, double plate_rho_c) {
+Scene slab_on_conducting_plate(double h, double plate_rho_c, double h_c = kHc, double averaging_time = 0.005) {
   Scene s;
   s.grid = {h, Vec2(0, 0), Vec2(0.4, kPlate + kSlab)};
   s.solver.cfl = 0.4;
@@ -150,11 +151,11 @@ Scene slab_on_conducting_plate(double h, double plate_rho_c) {
   RigidBodySpec plate;
   plate.name = "plate";
   plate.polygon = Polygon{{Vec2(0.1, 0.0), Vec2(0.3, 0.0), Vec2(0.3, kPlate), Vec2(0.1, kPlate)}};
-  plate.heat_transfer_coefficient = kHc;
+  plate.heat_transfer_coefficient = h_c;
   plate.temperature = kBottom;
   plate.conductivity = kPlateK;
   plate.volumetric_heat_capacity = plate_rho_c;
-  plate.heat_averaging_time = plate_rho_c > 0.0 ? 0.0 : 0.005;
+  plate.heat_averaging_time = plate_rho_c > 0.0 ? 0.0 : averaging_time;
   plate.held_faces = {0};
   s.rigid_bodies.push_back(plate);
   return s;
@@ -193,4 +194,39 @@ TEST(ConductingBody, SlabOnAConductingPlateCarriesTheSeriesFlow) {
     EXPECT_NEAR(flow, exact, 0.03 * exact) << "rho c " << rho_c;
     EXPECT_NEAR(top - kBottom, top_exact - kBottom, 0.03 * (top_exact - kBottom)) << "rho c " << rho_c;
   }
+}
+
+// A steady plate whose input average is given a time shorter than one update (weight 1) and a contact 40 times
+// more conductive (h_c = 1000 W/(m^2 K)): the plate's cells would answer each update's heat with a rise that sends
+// more than that heat back (the loop gain of the surface cells is several), and the plate's field and the slab's
+// temperatures would oscillate with a growing amplitude (negative kelvins within a few hundred updates). The average
+// takes no more weight than the loop allows (RigidBodyHeat::stable_average_weight), so the flow settles to the
+// series value within 3 % and no temperature leaves [T_bottom, T_top].
+TEST(ConductingBody, SteadyPlateWithAStiffContactSettlesWithoutOvershoot) {
+  const double h = 0.02, h_c = 1000.0;
+  const double q = (kTop - kBottom) / (kSlab / kSlabK + 1.0 / h_c + kPlate / kPlateK);  // W/m^2
+  Simulation sim(slab_on_conducting_plate(h, 0.0, h_c, 1e-9));
+  const double t_end = 0.4, t_mean = 0.3;
+  double heat = 0.0;
+  double coldest = kTop, hottest = kBottom;
+  while (sim.time() < t_end) {
+    sim.step(t_end - sim.time());
+    if (sim.time() > t_mean) heat += sim.last_step_heat_to_rigid_bodies();
+    const RigidBodyState& plate = sim.rigid_bodies()[0];
+    const BodyConduction& cells = sim.rigid_body_heat().body(0);
+    for (int c = 0; c < cells.cell_count(); ++c)
+      if (cells.kind(c) != BodyCell::Outside) {
+        coldest = std::min(coldest, plate.temperature_field[c]);
+        hottest = std::max(hottest, plate.temperature_field[c]);
+      }
+    for (const double T : sim.particles().temperature) {
+      coldest = std::min(coldest, T);
+      hottest = std::max(hottest, T);
+    }
+  }
+  const double flow = heat / (t_end - t_mean), exact = q * 0.2;
+  std::printf("stiff contact: flow %.3f W/m (series %.3f), temperatures %.2f..%.2f K\n", flow, exact, coldest, hottest);
+  EXPECT_NEAR(flow, exact, 0.03 * exact);
+  EXPECT_GE(coldest, kBottom - 1e-6);
+  EXPECT_LE(hottest, kTop + 1e-6);
 }
