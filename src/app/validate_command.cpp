@@ -29,6 +29,7 @@
 #include "studies/measured_conditions.hpp"
 #include "studies/run_records.hpp"
 #include "studies/task_farm.hpp"
+#include "studies/validation_defaults.hpp"
 #include "studies/validation_metrics.hpp"
 
 namespace mpmcut {
@@ -306,8 +307,10 @@ void add_validate_command(CLI::App& app) {
   add_progress_option(v, o->progress_interval_s);
   v->add_flag("--no-plots", o->no_plots, "Only the tables");
   v->add_option("--material", o->material,
-                "Material set to run: a set of the library (default ti64-cutting; docs/materials.md) or of "
-                "--material-file");
+                fmt::format("Material set to run: a set of the library (default {}, fitted to these measurements "
+                            "with crack friction and a conducting tool; ti64-cutting: the default case's; "
+                            "docs/materials.md) or of --material-file",
+                            kValidationMaterial));
   v->add_option("--measurements", o->measurements,
                 "Validate against your own force measurements instead of the built-in Klippel et al. 2024 data: a CSV "
                 "in the layout of data/experiments/ti64_klippel2024_orthogonal_forces.csv (columns h_mm, vc_m_per_min, "
@@ -329,7 +332,10 @@ void add_validate_command(CLI::App& app) {
                 "Change a numeric key of the chosen set, KEY=VALUE (repeatable, e.g. --material-key jc_C=0.035): "
                 "every case then runs a set \"trial\" that starts from it (library = the set) with these keys; "
                 "docs/materials.md lists the keys");
-  v->add_option("--friction", o->friction, "Coulomb coefficient at the tool (default 0.35; e.g. a calibrated one)")
+  v->add_option("--friction", o->friction,
+                fmt::format("Coulomb coefficient at the tool (default {:g} with the default material set, fitted "
+                            "with it; 0.35, the cutting preset's, with any other set)",
+                            kValidationMaterialFriction))
       ->check(CLI::Range(0.0, 2.0));
   v->add_option("--contact-detection", o->contact_detection,
                 fmt::format("How the tool contact finds the material (solver.contact_detection; default: the cutting "
@@ -345,7 +351,7 @@ void add_validate_command(CLI::App& app) {
   struct ThermalOption {
     const char* name;
     std::optional<double>* value;
-    const char* help;
+    std::string help;
     const ToolHeatKey& key;
   };
   for (const ThermalOption& t : {
@@ -354,16 +360,22 @@ void add_validate_command(CLI::App& app) {
                          "all of it; [cutting] friction_heat_share)",
                          kFrictionHeatShare},
            ThermalOption{"--tool-heat-transfer-coefficient", &o->tool_heat_transfer_coefficient,
-                         "Heat transfer coefficient between the workpiece and the tool, W/(m^2 K) (default 0: an "
-                         "adiabatic tool; [cutting] tool_heat_transfer_coefficient)",
+                         fmt::format("Heat transfer coefficient between the workpiece and the tool, W/(m^2 K) "
+                                     "(default {:g} with the default material set, which was fitted with a "
+                                     "conducting tool; 0, an adiabatic tool, with any other set; [cutting] "
+                                     "tool_heat_transfer_coefficient)",
+                                     kValidationToolHeatTransferCoefficient),
                          kToolHeatTransferCoefficient},
            ThermalOption{"--tool-temperature", &o->tool_temperature,
                          "The tool's constant temperature, K, where it exchanges heat (default: the workpiece's "
                          "initial temperature)",
                          kToolTemperature},
            ThermalOption{"--tool-conductivity", &o->tool_conductivity,
-                         "A conducting tool: its thermal conductivity, W/(m K) (default: none, the tool stays at its "
-                         "temperature; needs --tool-heat-transfer-coefficient; [cutting] tool_conductivity)",
+                         fmt::format("A conducting tool: its thermal conductivity, W/(m K) (default {:g}, carbide, "
+                                     "with the default material set and a heat transfer coefficient > 0; else 0: the "
+                                     "tool stays at its temperature, a heat sink; needs a heat transfer coefficient; "
+                                     "[cutting] tool_conductivity)",
+                                     kValidationToolConductivity),
                          kToolConductivity},
            ThermalOption{"--tool-volumetric-heat-capacity", &o->tool_volumetric_heat_capacity,
                          "A conducting tool's rho c, J/(m^3 K) (default 0: a steady tool; [cutting] "

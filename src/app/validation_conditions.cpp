@@ -17,6 +17,7 @@
 #include "io/input_error.hpp"
 #include "io/material_library.hpp"
 #include "io/whole_file.hpp"
+#include "studies/validation_defaults.hpp"
 
 namespace mpmcut::validation {
 
@@ -40,7 +41,12 @@ const std::vector<std::string>& quick_condition_ids() {
 // file stops the study before any run, with its file, line and key).
 void choose_material(const Options& o, ConditionRunSettings& s) {
   if (o.material_file.empty()) {
-    if (o.material.empty()) return;
+    if (o.material.empty()) {
+      s.material = kValidationMaterial;
+      s.material_note = "the default: fitted to Klippel et al. 2024 forces with crack friction and a conducting tool, "
+                        "docs/results/calibration_crack_friction";
+      return;
+    }
     if (!builtin_material_library().find(o.material))
       throw InputError(fmt::format("--material {}: no such set; the library has: {}", o.material,
                                    join(builtin_material_library().names(), ", ")));
@@ -156,20 +162,37 @@ ConditionRunSettings run_settings(const Options& o) {
     s.friction = *o.friction;
     s.friction_note = "chosen with --friction";
   }
+  // The default set runs as it was fitted (studies/validation_defaults.hpp): its friction and a conducting tool,
+  // where no option says otherwise; any other set with the cutting preset's friction and an adiabatic tool.
+  const bool as_fitted = s.material == kValidationMaterial && s.material_definitions.empty();
+  if (as_fitted && !o.friction) {
+    s.friction = kValidationMaterialFriction;
+    s.friction_note = "fitted with the material set, docs/results/calibration_crack_friction";
+  }
+  // A heat transfer coefficient of 0 makes the tool adiabatic, and then it conducts nothing.
+  const double heat_transfer =
+      o.tool_heat_transfer_coefficient.value_or(as_fitted ? kValidationToolHeatTransferCoefficient : 0.0);
+  const double conductivity =
+      o.tool_conductivity.value_or(as_fitted && heat_transfer > 0.0 ? kValidationToolConductivity : 0.0);
   // The conditions between the tool's heat options, as the case reader puts them on its keys: refused here, before
   // any run, rather than in every case file.
-  if (const auto conflict = tool_heat_conflict({o.friction_heat_share.value_or(1.0),
-                                                o.tool_heat_transfer_coefficient.value_or(0.0),
-                                                o.tool_conductivity.value_or(0.0),
+  if (const auto conflict = tool_heat_conflict({o.friction_heat_share.value_or(1.0), heat_transfer, conductivity,
                                                 o.tool_volumetric_heat_capacity.value_or(0.0)})) {
     std::string option = "--" + std::string(conflict->key);
     std::replace(option.begin(), option.end(), '_', '-');
     throw InputError(fmt::format("{} {:g}: must be {}", option, conflict->value, conflict->allowed));
   }
   s.friction_heat_share = o.friction_heat_share;
-  s.tool_heat_transfer_coefficient = o.tool_heat_transfer_coefficient;
+  // A value of 0 is the key's default: left out of the case files, which stay those of the runs made before the
+  // conducting default (their records match).
+  const auto unless_zero = [](double v) { return v > 0.0 ? std::optional<double>(v) : std::nullopt; };
+  s.tool_heat_transfer_coefficient = unless_zero(heat_transfer);
+  s.tool_conductivity = unless_zero(conductivity);
+  const char* kFittedTool = "the conducting carbide tool the set was fitted with (ASSUMPTION; "
+                            "--tool-heat-transfer-coefficient 0: adiabatic)";
+  if (!o.tool_heat_transfer_coefficient) s.tool_heat_transfer_note = kFittedTool;
+  if (!o.tool_conductivity) s.tool_conductivity_note = kFittedTool;
   s.tool_temperature = o.tool_temperature;
-  s.tool_conductivity = o.tool_conductivity;
   s.tool_volumetric_heat_capacity = o.tool_volumetric_heat_capacity;
   s.contact_detection = o.contact_detection;
   s.volumetric_average = o.volumetric_average;

@@ -32,13 +32,17 @@ struct Options {
   bool list = false;
   std::vector<double> h_mm, speeds_m_per_min;
   std::vector<std::string> condition_ids;
-  std::string material;         // a library set or one of material_file; empty: the default (ti64-cutting)
+  // A library set or one of material_file; empty: the default (studies/validation_defaults.hpp)
+  std::string material;
   std::string material_file;    // --material-file: [[material]] sets that --material may name
   std::vector<std::string> material_keys;  // --material-key KEY=VALUE: numeric keys changed from that set
-  std::optional<double> friction;  // Coulomb coefficient; none: the default (0.35)
+  // The default set runs as it was fitted (studies/validation_defaults.hpp) where these are none: its friction and
+  // a conducting tool; any other set with the preset's friction (0.35) and an adiabatic tool.
+  std::optional<double> friction;
   std::optional<double> friction_heat_share;  // none: the preset's (all frictional heat into the workpiece)
-  std::optional<double> tool_heat_transfer_coefficient, tool_temperature;  // none: an adiabatic tool
-  std::optional<double> tool_conductivity, tool_volumetric_heat_capacity;  // none: a tool at its temperature
+  std::optional<double> tool_heat_transfer_coefficient, tool_conductivity;
+  std::optional<double> tool_temperature;  // none: the workpiece's initial temperature
+  std::optional<double> tool_volumetric_heat_capacity;  // none: a steady tool
   std::string contact_detection;  // empty: the preset's (penalty contact)
   std::string volumetric_average;  // empty: the preset's (off)
   // --measurements: a force file of the user's in the layout of data/experiments (then the matrix is its rows, without

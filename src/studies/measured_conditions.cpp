@@ -352,16 +352,19 @@ std::string condition_case_text(const CuttingCondition& c, const ConditionRunSet
     return o.purpose == "calibration" ? std::string("chosen in the calibration's [runs]")
                                       : fmt::format("chosen with {}", option);
   };
+  const auto or_chosen = [&](const std::string& note, const char* option) {
+    return note.empty() ? chosen(option) : note;
+  };
   if (o.friction_heat_share)
     s += fmt::format("friction_heat_share = {}  # {} (the rest flows into the tool)\n", *o.friction_heat_share,
                      chosen("--friction-heat-share"));
   if (o.tool_heat_transfer_coefficient)
     s += fmt::format("tool_heat_transfer_coefficient = {}  # W/(m^2 K), {}\n", *o.tool_heat_transfer_coefficient,
-                     chosen("--tool-heat-transfer-coefficient"));
+                     or_chosen(o.tool_heat_transfer_note, "--tool-heat-transfer-coefficient"));
   if (o.tool_temperature)
     s += fmt::format("tool_temperature = {}  # K, {}\n", *o.tool_temperature, chosen("--tool-temperature"));
   if (o.tool_conductivity)
-    s += fmt::format("tool_conductivity = {}  # W/(m K), {}\n", *o.tool_conductivity, chosen("--tool-conductivity"));
+    s += fmt::format("tool_conductivity = {}  # W/(m K), {}\n", *o.tool_conductivity, or_chosen(o.tool_conductivity_note, "--tool-conductivity"));
   if (o.tool_volumetric_heat_capacity)
     s += fmt::format("tool_volumetric_heat_capacity = {}  # J/(m^3 K), {}\n", *o.tool_volumetric_heat_capacity,
                      chosen("--tool-volumetric-heat-capacity"));

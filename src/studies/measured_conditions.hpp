@@ -128,6 +128,9 @@ struct ConditionRunSettings {
   // A conducting tool's conductivity, W/(m K), and volumetric heat capacity, J/(m^3 K); none: not conducting.
   std::optional<double> tool_conductivity;
   std::optional<double> tool_volumetric_heat_capacity;
+  // Where tool_heat_transfer_coefficient and tool_conductivity come from when a default chose them (the case file's
+  // comment); empty: the option or [runs] key of the same name.
+  std::string tool_heat_transfer_note, tool_conductivity_note;
   int snapshots = 0;        // VTU snapshots of each run; 0: 2 with quick, else 20
   // solver.contact_detection of every case (a name as the case file spells it); empty: the preset's, and the
   // case text stays as it was before the option existed (committed run records still match).

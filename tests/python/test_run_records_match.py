@@ -26,11 +26,13 @@ ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 # (records directory, the validate options it was run with: its README's command, the model version of its
 # scenes today: a record of an older one is listed "outdated-record"). The node-detection matrices name their
 # contact since the preset's became penalty (2026-12-07), and their chip-type conditions' t0/10 since the default
-# became t0/20 (the same day).
+# became t0/20 (the same day). The matrix of ti64-cutting names its set since the default set became
+# ti64-klippel-crack-friction (2026-12-08; another set keeps the preset's friction and an adiabatic tool).
 OLD_CHIP_CELLS = ["--chip-cells-per-feed", "10"]
 SPEED_ENDS = ["--material-file", "docs/results/calibration_speed_ends/best_material.toml"]
 MATRICES = [
-    ("docs/results/validation_matrix/records", ["--contact-detection", "node"] + OLD_CHIP_CELLS, 0),
+    ("docs/results/validation_matrix/records",
+     ["--material", "ti64-cutting", "--contact-detection", "node"] + OLD_CHIP_CELLS, 0),
     ("docs/results/validation_speed_ends/records", SPEED_ENDS + ["--contact-detection", "node"] + OLD_CHIP_CELLS, 0),
     ("docs/results/validation_speed_ends_penalty/records",
      SPEED_ENDS + ["--contact-detection", "penalty"] + OLD_CHIP_CELLS, 1),

@@ -27,7 +27,7 @@ TEST(CommandLine, NoCommandListsTheCommandsAndNamesAnOptionOnce) {
 
 // validate's tool-heat options allow what the [cutting] keys allow (cutting/tool_heat_settings.hpp): an open bound
 // (tool_temperature > 0 K) and NaN are refused by the option, and a combination the case reader would refuse in every
-// case file (a conducting tool without a heat transfer coefficient) is refused before any run, naming the option.
+// case file (a conducting tool with an adiabatic surface) is refused before any run, naming the option.
 TEST(CommandLine, ValidateRefusesToolHeatTheCaseReaderWouldRefuse) {
   const fs::path dir = fs::temp_directory_path() / fmt::format("mpmcut_validate_tool_heat_{}", getpid());
   fs::remove_all(dir);
@@ -38,7 +38,9 @@ TEST(CommandLine, ValidateRefusesToolHeatTheCaseReaderWouldRefuse) {
   EXPECT_NE(r.output.find("not a number in (0, 10000) K"), std::string::npos) << r.output;
   r = run_mpmcut({"validate", "--quick", "--out", out, "--friction-heat-share", "nan"}, dir / "nan.txt");
   EXPECT_EQ(r.exit_code, 2) << r.output;
-  r = run_mpmcut({"validate", "--quick", "--out", out, "--tool-conductivity", "86"}, dir / "conductivity.txt");
+  r = run_mpmcut({"validate", "--quick", "--out", out, "--tool-heat-transfer-coefficient", "0", "--tool-conductivity",
+                  "86"},
+                 dir / "conductivity.txt");
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("--tool-conductivity 86: must be 0 unless tool_heat_transfer_coefficient > 0"),
             std::string::npos)
