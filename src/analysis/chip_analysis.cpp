@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis/chip_pieces.hpp"
+#include "cutting/tool_geometry.hpp"
 
 namespace mpmcut {
 
@@ -26,10 +27,10 @@ struct RakeFrame {
 };
 
 RakeFrame rake_frame(const ChipAnalysisSetup& s) {
-  const double a = s.rake_angle_deg * kDeg;
+  const FaceDirections rake = rake_face_directions(s.rake_angle_deg);  // as the preset builds the rake face
   RakeFrame f;
-  f.u = Vec2(std::sin(a), std::cos(a));   // as tool_geometry.cpp builds the rake face
-  f.n = Vec2(-std::cos(a), std::sin(a));  // outward normal of the rake face, towards the chip
+  f.u = rake.along;
+  f.n = rake.normal;
   // The cutting edge: the lowest vertex of the tool's core polygon (leftmost on a tie); the
   // grown rake face is the core's rake line moved r along n.
   const std::vector<Vec2>& v = s.tool.vertices();

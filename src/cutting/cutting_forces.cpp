@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "cutting/tool_geometry.hpp"
 #include "solver/simulation.hpp"
 #include "cutting/cutting_scene.hpp"
 
@@ -44,14 +45,13 @@ struct ToolFrame {
   double edge_radius;
 };
 ToolFrame tool_frame(const CuttingParameters& c, const Simulation& sim) {
-  const double deg = 3.14159265358979323846 / 180.0;
-  const double a = c.rake_angle_deg * deg, g = c.clearance_angle_deg * deg;
   const RigidBodySpec& tool = sim.scene().rigid_bodies[0];
+  const FaceDirections rake = rake_face_directions(c.rake_angle_deg), flank = flank_directions(c.clearance_angle_deg);
   ToolFrame f;
-  f.up = Vec2(std::sin(a), std::cos(a));
-  f.normal = Vec2(-std::cos(a), std::sin(a));
-  f.flank_dir = Vec2(std::cos(g), std::sin(g));
-  f.flank_normal = Vec2(std::sin(g), -std::cos(g));
+  f.up = rake.along;
+  f.normal = rake.normal;
+  f.flank_dir = flank.along;
+  f.flank_normal = flank.normal;
   f.edge_radius = tool.rounding_radius;
   // Core vertex 0 is the centre of the edge arc (the sharp edge when r = 0).
   f.arc_centre = tool.polygon.vertices[0] + sim.rigid_bodies()[0].displacement;

@@ -10,6 +10,16 @@
 
 namespace mpmcut {
 
+FaceDirections rake_face_directions(double rake_angle_deg) {
+  const double a = rake_angle_deg * (std::numbers::pi / 180.0);
+  return {Vec2(std::sin(a), std::cos(a)), Vec2(-std::cos(a), std::sin(a))};
+}
+
+FaceDirections flank_directions(double clearance_angle_deg) {
+  const double g = clearance_angle_deg * (std::numbers::pi / 180.0);
+  return {Vec2(std::cos(g), std::sin(g)), Vec2(std::sin(g), -std::cos(g))};
+}
+
 namespace {
 
 // Intersection of the lines a + s da and b + t db.
@@ -42,10 +52,8 @@ std::vector<Vec2> offset_inward(const std::vector<Vec2>& v, double r) {
 // The sharp wedge with its cutting edge at the origin, counter-clockwise: edge, end of the flank (rising at the
 // clearance angle), back corner, top of the rake face (leaning by the rake angle).
 std::vector<Vec2> sharp_wedge(const CuttingParameters& c, const ToolSize& size) {
-  const double deg = std::numbers::pi / 180.0;
-  const double alpha = c.rake_angle_deg * deg, gamma = c.clearance_angle_deg * deg;
-  const Vec2 rake_dir(std::sin(alpha), std::cos(alpha));
-  const Vec2 flank_dir(std::cos(gamma), std::sin(gamma));
+  const Vec2 rake_dir = rake_face_directions(c.rake_angle_deg).along;
+  const Vec2 flank_dir = flank_directions(c.clearance_angle_deg).along;
   const Vec2 p_flank = (size.length / flank_dir.x()) * flank_dir;
   const Vec2 p_rake = (size.height / rake_dir.y()) * rake_dir;
   return {Vec2::Zero(), p_flank, Vec2(p_flank.x(), p_rake.y()), p_rake};

@@ -16,6 +16,15 @@ struct ToolPlacement {
   double leading_x = 0.0;
 };
 
+// The directions of the tool's faces as the preset builds them (angles in degrees). The rake face: up it, away from
+// the edge, and its outward normal towards the chip (rake 0: +y and -x). The flank: along it, away from the edge and
+// rising at the clearance angle, and its outward normal towards the machined surface.
+struct FaceDirections {
+  Vec2 along, normal;
+};
+FaceDirections rake_face_directions(double rake_angle_deg);
+FaceDirections flank_directions(double clearance_angle_deg);
+
 // The tool's length (along the machined surface, from the cutting edge to its back) and height (up the rake face,
 // from the edge to its top), m.
 struct ToolSize {
