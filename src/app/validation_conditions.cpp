@@ -190,8 +190,8 @@ ConditionRunSettings run_settings(const Options& o) {
   s.tool_conductivity = unless_zero(conductivity);
   const char* kFittedTool = "the conducting carbide tool the set was fitted with (ASSUMPTION; "
                             "--tool-heat-transfer-coefficient 0: adiabatic)";
-  if (!o.tool_heat_transfer_coefficient) s.tool_heat_transfer_note = kFittedTool;
-  if (!o.tool_conductivity) s.tool_conductivity_note = kFittedTool;
+  if (as_fitted && !o.tool_heat_transfer_coefficient) s.tool_heat_transfer_note = kFittedTool;
+  if (as_fitted && !o.tool_conductivity) s.tool_conductivity_note = kFittedTool;
   s.tool_temperature = o.tool_temperature;
   s.tool_volumetric_heat_capacity = o.tool_volumetric_heat_capacity;
   s.contact_detection = o.contact_detection;
