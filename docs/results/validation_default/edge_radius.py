@@ -4,7 +4,8 @@ The Klippel et al. 2024 tests at h = 0.1 mm were cut with edges of 29-41 um (eac
 so a force's change between two speeds mixes the speed's effect with the edge's. Fitting
     F = a + b ln(v / (m/min)) + c r_n / um
 to the measured means and, separately, to the simulated ones (each run has its condition's r_n) gives both effects
-and their standard errors. Usage:
+and their standard errors. The simulated forces are split as summary.json splits them (the flat rake face's normal and
+friction force, the edge arc's and flank's cutting and thrust force), to show where the edge's effect sits. Usage:
 
     /usr/bin/python3 docs/results/validation_default/edge_radius.py [RECORDS_DIR] [H_MM]
 
@@ -43,6 +44,8 @@ def main():
     h = float(sys.argv[2]) if len(sys.argv) > 2 else 0.1
     measured = measured_conditions()
     design, forces = [], {"Fc measured": [], "Fc simulated": [], "Ft measured": [], "Ft simulated": []}
+    split = {"rake face normal force (in Fc)": [], "rake face friction force (in Ft)": [],
+             "edge arc and flank, Fc": [], "edge arc and flank, Ft": []}
     for name in sorted(os.listdir(records)):
         match = re.match(r"forces_h([\d.]+)mm_vc([\d.]+)mpmin$", name)
         if not match or float(match.group(1)) != h:
@@ -56,16 +59,21 @@ def main():
         forces["Fc simulated"].append(summary["mean_cutting_force_N_per_mm"])
         forces["Ft measured"].append(float(row["Ff_mean_N"]))
         forces["Ft simulated"].append(summary["mean_thrust_force_N_per_mm"])
+        rake, edge = summary["rake_face"], summary["edge_and_flank"]
+        split["rake face normal force (in Fc)"].append(rake["normal_force_N_per_mm"])
+        split["rake face friction force (in Ft)"].append(rake["friction_force_N_per_mm"])
+        split["edge arc and flank, Fc"].append(edge["cutting_force_N_per_mm"])
+        split["edge arc and flank, Ft"].append(edge["thrust_force_N_per_mm"])
     if len(design) < 4:
         raise SystemExit(f"{records}: {len(design)} conditions at h = {h} mm, at least 4 needed for the fit")
     design = np.array(design)
     print(f"{len(design)} conditions at h = {h} mm (r_n {design[:, 2].min():.1f}-{design[:, 2].max():.1f} um, "
           f"correlation of ln v and r_n {np.corrcoef(design[:, 1], design[:, 2])[0, 1]:+.2f})\n")
-    print("| force | per e-fold of speed (N/mm) | per um of edge radius (N/mm) |")
-    print("|---|---|---|")
-    for label, values in forces.items():
+    print("| force | mean (N/mm) | per e-fold of speed (N/mm) | per um of edge radius (N/mm) |")
+    print("|---|---|---|---|")
+    for label, values in list(forces.items()) + [("simulated: " + k, v) for k, v in split.items()]:
         coef, errors = fit(design, values)
-        print(f"| {label} | {coef[1]:+.2f} ± {errors[1]:.2f} | {coef[2]:+.2f} ± {errors[2]:.2f} |")
+        print(f"| {label} | {np.mean(values):.1f} | {coef[1]:+.2f} ± {errors[1]:.2f} | {coef[2]:+.2f} ± {errors[2]:.2f} |")
 
 
 if __name__ == "__main__":
